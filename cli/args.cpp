@@ -1,0 +1,49 @@
+#include "cli/args.h"
+
+#include <charconv>
+
+namespace pt::cli {
+
+Args::Args(int argc, char** argv, int first) {
+    for (int i = first; i < argc; ++i) args_.emplace_back(argv[i]);
+}
+
+bool Args::nextOption(std::string& name) {
+    if (hasPending_) throw UsageError("option --" + pendingOption_ + " does not take a value");
+    const std::string& a = args_[pos_];
+    if (a.size() < 2 || a[0] != '-' || (a[1] >= '0' && a[1] <= '9')) return false;
+    ++pos_;
+    name = a.substr(a[1] == '-' ? 2 : 1);
+    if (auto eq = name.find('='); eq != std::string::npos) {
+        pendingValue_ = name.substr(eq + 1);
+        hasPending_ = true;
+        name = name.substr(0, eq);
+        pendingOption_ = name;
+    }
+    return true;
+}
+
+std::string Args::positional() { return args_[pos_++]; }
+
+std::string Args::value(const std::string& option) {
+    if (hasPending_) {
+        hasPending_ = false;
+        return pendingValue_;
+    }
+    if (pos_ >= args_.size()) throw UsageError("option --" + option + " needs a value");
+    return args_[pos_++];
+}
+
+long long Args::integer(const std::string& option, long long lo, long long hi) {
+    std::string v = value(option);
+    long long x = 0;
+    auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+    if (ec != std::errc() || ptr != v.data() + v.size() || v.empty())
+        throw UsageError("option --" + option + ": expected an integer, got \"" + v + "\"");
+    if (x < lo || x > hi)
+        throw UsageError("option --" + option + ": " + v + " is out of range [" + std::to_string(lo) + ", " +
+                         std::to_string(hi) + "]");
+    return x;
+}
+
+} // namespace pt::cli

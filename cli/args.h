@@ -1,0 +1,35 @@
+// Command-line parsing shared by the subcommands. Options may be written -name or --name, with
+// the value as the next argument or after '='. Errors are UsageError (exit status 2).
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pt::cli {
+
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class Args {
+public:
+    Args(int argc, char** argv, int first);
+
+    bool done() const { return pos_ >= args_.size(); }
+    // If the next argument is an option, returns its name without dashes (and splits "=value").
+    bool nextOption(std::string& name);
+    std::string positional();
+    std::string value(const std::string& option);
+    long long integer(const std::string& option, long long lo, long long hi);
+
+private:
+    std::vector<std::string> args_;
+    size_t pos_ = 0;
+    std::string pendingOption_, pendingValue_;
+    bool hasPending_ = false;
+};
+
+} // namespace pt::cli

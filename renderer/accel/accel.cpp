@@ -1,0 +1,142 @@
+#include "accel/accel.h"
+
+#include "scene/load_error.h"
+
+#include <embree3/rtcore.h>
+
+#include <string>
+
+namespace pt {
+
+struct Accel::Impl {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+    std::string error;
+    // Sphere lights (radius > 0) as (centre, radius), with their index in Scene::lights.
+    std::vector<glm::vec4> spheres;
+    std::vector<uint32_t> sphereLight;
+};
+
+static void onEmbreeError(void* user, RTCError code, const char* message) {
+    auto* error = static_cast<std::string*>(user);
+    if (error->empty()) *error = "Embree error " + std::to_string(int(code)) + ": " + (message ? message : "");
+}
+
+Accel::Accel(const Scene& scene, int threads) : impl_(std::make_unique<Impl>()) {
+    std::string config = threads > 0 ? "threads=" + std::to_string(threads) : "";
+    impl_->device = rtcNewDevice(config.c_str());
+    if (!impl_->device) throw LoadError("cannot create the Embree device (error " + std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
+    rtcSetDeviceErrorFunction(impl_->device, onEmbreeError, &impl_->error);
+
+    impl_->scene = rtcNewScene(impl_->device);
+    // ROBUST keeps rays from slipping between adjacent triangles; HIGH quality pays off for the
+    // many rays of a batch render.
+    rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
+
+    if (scene.triangleCount() > 0) {
+        RTCGeometry geom = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_HIGH);
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+            geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), scene.positions.size()));
+        auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+            geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), scene.triangleCount()));
+        if (!vertices || !indices) throw LoadError("Embree could not allocate the mesh buffers: " + impl_->error);
+        for (size_t i = 0; i < scene.positions.size(); ++i)
+            for (int k = 0; k < 3; ++k) vertices[3 * i + k] = scene.positions[i][k];
+        for (size_t i = 0; i < scene.triangleCount(); ++i)
+            for (int k = 0; k < 3; ++k) indices[3 * i + k] = scene.triPositions[i][k];
+        rtcCommitGeometry(geom);
+        rtcAttachGeometryByID(impl_->scene, geom, 0);
+        rtcReleaseGeometry(geom);
+    }
+    rtcCommitScene(impl_->scene);
+    if (!impl_->error.empty()) throw LoadError(scene.path + ": building the BVH failed: " + impl_->error);
+
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const SphereLight& l = scene.lights[i];
+        if (l.isPoint()) continue;
+        impl_->spheres.emplace_back(l.center, l.radius);
+        impl_->sphereLight.push_back(uint32_t(i));
+    }
+}
+
+Accel::~Accel() {
+    if (impl_->scene) rtcReleaseScene(impl_->scene);
+    if (impl_->device) rtcReleaseDevice(impl_->device);
+}
+
+float intersectSphere(const Vec3& origin, const Vec3& dir, const Vec3& center, float radius) {
+    Vec3 f = origin - center;
+    float b = glm::dot(f, dir);
+    float c = glm::dot(f, f) - radius * radius;
+    Vec3 perp = f - b * dir; // distance from centre to the line, computed without cancellation
+    float disc = radius * radius - glm::dot(perp, perp);
+    if (disc < 0.0f) return kInf;
+    float q = -b - std::copysign(std::sqrt(disc), b);
+    float t0 = c / q, t1 = q;
+    if (t0 > t1) std::swap(t0, t1);
+    if (t0 > 0.0f) return t0;
+    if (t1 > 0.0f) return t1;
+    return kInf;
+}
+
+static void fillRay(RTCRay& r, const Ray& ray, float tfar) {
+    r.org_x = ray.origin.x;
+    r.org_y = ray.origin.y;
+    r.org_z = ray.origin.z;
+    r.dir_x = ray.dir.x;
+    r.dir_y = ray.dir.y;
+    r.dir_z = ray.dir.z;
+    r.tnear = 0.0f;
+    r.tfar = tfar;
+    r.time = 0.0f;
+    r.mask = 0xFFFFFFFFu; // Debian's Embree is built with ray masks
+    r.id = 0;
+    r.flags = 0;
+}
+
+Hit Accel::intersect(const Ray& ray, bool coherent, float tfar) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    RTCRayHit rh;
+    fillRay(rh.ray, ray, tfar);
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl_->scene, &context, &rh);
+
+    Hit hit;
+    if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+        hit.t = rh.ray.tfar;
+        hit.prim = rh.hit.primID;
+        hit.u = rh.hit.u;
+        hit.v = rh.hit.v;
+    }
+    for (size_t i = 0; i < impl_->spheres.size(); ++i) {
+        const glm::vec4& s = impl_->spheres[i];
+        float t = intersectSphere(ray.origin, ray.dir, Vec3(s), s.w);
+        if (t < hit.t && t < tfar) {
+            hit.t = t;
+            hit.prim = impl_->sphereLight[i];
+            hit.onSphere = true;
+        }
+    }
+    return hit;
+}
+
+bool Accel::occluded(const Ray& ray, float tfar, int skipLight) const {
+    for (size_t i = 0; i < impl_->spheres.size(); ++i) {
+        if (int(impl_->sphereLight[i]) == skipLight) continue;
+        const glm::vec4& s = impl_->spheres[i];
+        if (intersectSphere(ray.origin, ray.dir, Vec3(s), s.w) < tfar) return true;
+    }
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay r;
+    fillRay(r, ray, tfar);
+    rtcOccluded1(impl_->scene, &context, &r);
+    return r.tfar < 0.0f; // Embree sets tfar to -inf when it finds an occluder
+}
+
+} // namespace pt

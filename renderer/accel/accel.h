@@ -1,0 +1,51 @@
+// Ray queries against the scene: Embree 3 for the triangles, an exact analytic test for the few
+// sphere lights. This is the only module that includes Embree's headers.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <memory>
+
+namespace pt {
+
+// Rays always start at tnear = 0: surface origins are offset by spawnRay (accel/ray_offset.h)
+// instead of relying on an epsilon here. `dir` must be unit length.
+struct Ray {
+    Vec3 origin;
+    Vec3 dir;
+};
+
+struct Hit {
+    static constexpr uint32_t kNone = ~0u;
+    float t = kInf;
+    uint32_t prim = kNone; // triangle index, or index into Scene::lights when onSphere
+    float u = 0.0f, v = 0.0f; // barycentric weights of triangle vertices 1 and 2
+    bool onSphere = false;
+
+    bool found() const { return prim != kNone; }
+};
+
+class Accel {
+public:
+    // Builds the BVH. `threads` bounds Embree's build threads (0: all).
+    Accel(const Scene& scene, int threads);
+    ~Accel();
+    Accel(const Accel&) = delete;
+    Accel& operator=(const Accel&) = delete;
+
+    // Closest hit with t in (0, tfar). `coherent` marks camera rays.
+    Hit intersect(const Ray& ray, bool coherent, float tfar = kInf) const;
+    // True if anything lies on the ray with t in (0, tfar), ignoring sphere light `skipLight`
+    // (the light being sampled; -1 for none).
+    bool occluded(const Ray& ray, float tfar, int skipLight = -1) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// Closest intersection t > 0 of a ray with a sphere, or kInf. Uses the formulation of Haines et
+// al. (Ray Tracing Gems, ch. 7) that avoids cancellation when the sphere is small or far.
+float intersectSphere(const Vec3& origin, const Vec3& dir, const Vec3& center, float radius);
+
+} // namespace pt

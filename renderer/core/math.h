@@ -1,0 +1,47 @@
+// Vector types and small helpers shared by the whole renderer.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace pt {
+
+using Vec2 = glm::vec2;
+using Vec3 = glm::vec3;
+using Spectrum = glm::vec3; // linear RGB radiance or reflectance
+
+inline constexpr float kPi = 3.14159265358979323846f;
+inline constexpr float kInvPi = 0.31830988618379067154f;
+inline constexpr float kInf = std::numeric_limits<float>::infinity();
+
+inline float maxComponent(const Vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
+inline float average(const Vec3& v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
+inline float luminance(const Spectrum& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+inline bool isBlack(const Spectrum& c) { return c.x == 0.0f && c.y == 0.0f && c.z == 0.0f; }
+inline bool isFinite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+inline float sqr(float x) { return x * x; }
+inline float safeSqrt(float x) { return std::sqrt(std::max(0.0f, x)); }
+
+// Orthonormal basis around a unit vector n (Duff et al. 2017, "Building an Orthonormal Basis,
+// Revisited"): branchless and exact for every n, including n = (0, 0, -1).
+struct Frame {
+    Vec3 s, t, n;
+
+    Frame() = default;
+    explicit Frame(const Vec3& normal) : n(normal) {
+        float sign = std::copysign(1.0f, n.z);
+        float a = -1.0f / (sign + n.z);
+        float b = n.x * n.y * a;
+        s = Vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
+        t = Vec3(b, sign + n.y * n.y * a, -n.y);
+    }
+    Vec3 toLocal(const Vec3& v) const { return Vec3(glm::dot(v, s), glm::dot(v, t), glm::dot(v, n)); }
+    Vec3 toWorld(const Vec3& v) const { return s * v.x + t * v.y + n * v.z; }
+};
+
+} // namespace pt

@@ -1,0 +1,65 @@
+// Every emitter of a scene in one list, chosen for next-event estimation in proportion to its
+// power: sphere lights, point lights and emissive triangles. Built once per render.
+#pragma once
+
+#include "core/math.h"
+#include "sampling/distribution1d.h"
+#include "scene/scene.h"
+
+#include <vector>
+
+namespace pt {
+
+struct Emitter {
+    enum class Kind : uint8_t { Sphere, Point, Triangle };
+    Kind kind;
+    uint32_t index; // into Scene::lights, or a triangle index
+};
+
+// A point on a light seen from a shading point, with what a shadow ray needs to reach it.
+struct LightSample {
+    Vec3 wi;              // unit direction from the shading point to the light
+    float distance = 0.0f; // to the sampled point (for spheres: to the sphere's surface)
+    Spectrum radiance;    // emitted radiance towards the shading point; for point lights I / d^2
+    float pdf = 0.0f;     // solid-angle density, emitter choice excluded; 0 means no sample
+    bool delta = false;   // point light: cannot be hit by BSDF sampling
+    // For triangles: the point, its error bound and normal, to offset the shadow ray's end.
+    Vec3 point, pointError, normal;
+};
+
+class LightSet {
+public:
+    explicit LightSet(const Scene& scene);
+
+    bool empty() const { return emitters_.empty(); }
+    size_t size() const { return emitters_.size(); }
+    const Emitter& emitter(size_t i) const { return emitters_[i]; }
+
+    // Picks an emitter for next-event estimation; u is rescaled for reuse.
+    size_t choose(float& u, float& pmf) const {
+        float remapped;
+        size_t i = distribution_.sample(u, &pmf, &remapped);
+        u = remapped;
+        return i;
+    }
+    float pmf(size_t emitterIndex) const { return distribution_.pmf(emitterIndex); }
+
+    // Emitter index of a sphere light or an emissive triangle, for MIS when a BSDF ray hits it.
+    uint32_t emitterOfLight(uint32_t lightIndex) const { return lightEmitter_[lightIndex]; }
+    uint32_t emitterOfTriangle(uint32_t prim) const { return triangleEmitter_[prim]; }
+
+    // Samples a point on emitter i as seen from p.
+    LightSample sample(size_t i, const Vec3& p, Vec2 u) const;
+    // Solid-angle density with which sample() picks direction wi from p towards emitter i, given
+    // that it hits the emitter at distance `distance` (emitter choice excluded).
+    float pdf(size_t i, const Vec3& p, const Vec3& wi, float distance) const;
+
+private:
+    const Scene& scene_;
+    std::vector<Emitter> emitters_;
+    Distribution1D distribution_;
+    std::vector<uint32_t> lightEmitter_;
+    std::vector<uint32_t> triangleEmitter_; // empty unless the scene has emissive triangles
+};
+
+} // namespace pt

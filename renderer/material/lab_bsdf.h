@@ -1,0 +1,67 @@
+// The lab's material tree, evaluated at one hit.
+//
+//   f  = w * FresnelBlend(R0)[reflect: Spec(Ks), otherwise: B1] + (1 - w) * B1
+//   B1 = T * Refr(eta) + (1 - T) * Diffuse(Kd)
+//   FresnelBlend picks the reflection branch with weight F = R0 + (1 - R0)(1 - |cos theta_o|)^5
+//
+// For a fixed outgoing direction the blends are constants, so the tree collapses into a sum of
+// three lobes with per-hit weights:
+//   mirror  (delta)     w F Ks
+//   refract (delta)     (1 - w F) T
+//   diffuse (Lambert)   (1 - w F)(1 - T) Kd
+// One lobe is sampled with probability proportional to its average weight, which is unbiased for
+// the whole tree and never samples a lobe of weight zero.
+//
+// Conventions (as in pbrt): directions are in the local shading frame (z = shading normal, which
+// points to the outside of the object) and both wo and wi point away from the surface; wo is the
+// direction the path came from. theta_o in F is the angle of wo. eval() returns f * |cos theta_i|
+// of the non-delta lobes; pdf() is the solid-angle density with which sample() returns wi through
+// a non-delta lobe, lobe choice included.
+#pragma once
+
+#include "core/math.h"
+#include "scene/scene.h"
+
+namespace pt {
+
+enum class HemisphereSampling { Cosine, Uniform };
+
+struct BsdfSample {
+    Vec3 wi;
+    Spectrum weight; // f * |cos theta_i| / pdf, or the lobe weight over its probability for delta lobes
+    float pdf = 0.0f; // solid-angle density; for delta lobes, only the lobe's selection probability
+    bool delta = false;
+    float radianceScale = 1.0f; // (eta_o / eta_i)^2 included in weight when the path refracted
+};
+
+struct LabBsdf {
+    Spectrum mirror{0.0f}, refract{0.0f}, diffuse{0.0f};
+    float pMirror = 0.0f, pRefract = 0.0f, pDiffuse = 0.0f;
+    float eta = 1.0f; // index of refraction inside the surface; the outside is 1
+    HemisphereSampling hemisphere = HemisphereSampling::Cosine;
+
+    // `kd` is the material's Kd already multiplied by its texture; cosThetaO is wo.z.
+    static LabBsdf make(const Material& m, const Spectrum& kd, float cosThetaO,
+                        HemisphereSampling hemisphere = HemisphereSampling::Cosine);
+
+    bool hasNonDelta() const { return pDiffuse > 0.0f; }
+    bool isBlack() const { return pMirror + pRefract + pDiffuse == 0.0f; }
+
+    Spectrum eval(const Vec3& wo, const Vec3& wi) const;
+    float pdf(const Vec3& wo, const Vec3& wi) const;
+    // u1 chooses the lobe, u2 the direction inside it. Returns false if the path ends here.
+    bool sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const;
+};
+
+// Schlick's approximation, per channel: R0 + (1 - R0)(1 - cos)^5.
+inline Spectrum schlickFresnel(const Spectrum& r0, float cosTheta) {
+    float m = 1.0f - std::min(1.0f, std::abs(cosTheta));
+    float m2 = m * m;
+    return r0 + (Spectrum(1.0f) - r0) * (m2 * m2 * m);
+}
+
+// Refracts wo through the plane z = 0 with relative index etaRel = eta_transmitted /
+// eta_incident. Returns false on total internal reflection.
+bool refractDirection(const Vec3& wo, float etaRel, Vec3& wt);
+
+} // namespace pt

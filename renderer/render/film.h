@@ -1,0 +1,41 @@
+// Per-pixel sums of radiance samples and of their squares, from which the mean image and the
+// variance of that mean are derived. Each pixel is written by one task at a time, so no locks.
+// Counts are per pixel, so a render stopped part-way through a pass still gives a correct mean.
+#pragma once
+
+#include "core/math.h"
+
+#include <glm/gtc/type_precision.hpp>
+
+#include <vector>
+
+namespace pt {
+
+class Film {
+public:
+    Film(int width, int height)
+        : width_(width), height_(height), count_(size_t(width) * height, 0),
+          sum_(size_t(width) * height, glm::dvec3(0.0)), sumSq_(size_t(width) * height, glm::dvec3(0.0)) {}
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // Fewest samples any pixel holds.
+    uint32_t minSamples() const;
+
+    void add(size_t pixel, const glm::dvec3& sum, const glm::dvec3& sumSq, uint32_t n) {
+        count_[pixel] += n;
+        sum_[pixel] += sum;
+        sumSq_[pixel] += sumSq;
+    }
+
+    // Interleaved RGB float images of the mean and of its variance (sample variance / n).
+    std::vector<float> mean() const;
+    std::vector<float> varianceOfMean() const;
+
+private:
+    int width_, height_;
+    std::vector<uint32_t> count_;
+    std::vector<glm::dvec3> sum_, sumSq_;
+};
+
+} // namespace pt

@@ -1,0 +1,137 @@
+#include "render/path_tracer.h"
+
+#include "render/surface_point.h"
+#include "render/texture_lookup.h"
+
+namespace pt {
+namespace {
+
+// Veach's power heuristic (beta = 2) for two strategies with one sample each.
+inline float powerHeuristic(float pdfA, float pdfB) {
+    float a = pdfA * pdfA, b = pdfB * pdfB;
+    return a > 0.0f ? a / (a + b) : 0.0f;
+}
+
+constexpr int kRouletteDepth = 3; // scattering events before Russian roulette starts
+
+} // namespace
+
+Spectrum PathTracer::trace(const Ray& cameraRay, IndependentSampler& sampler, RayCounts& counts) const {
+    const bool sampleLights = settings_.lightSampling != LightSampling::Bsdf && !lights_.empty();
+    const bool weighHits = settings_.lightSampling == LightSampling::Mis;
+
+    Spectrum L(0.0f), beta(1.0f);
+    Ray ray = cameraRay;
+    float etaScale = 1.0f;     // product of radiance scalings at refractions, undone for roulette
+    bool deltaBefore = true;   // camera or delta lobe before this hit: emitters seen count fully
+    float prevPdf = 0.0f;      // BSDF pdf of the direction that led here (non-delta)
+    Vec3 prevP(0.0f);          // where that direction started
+    ++counts.camera;
+
+    // Weight of emission found by BSDF sampling (or by the camera) at this hit.
+    auto hitWeight = [&](uint32_t emitter, float distance) {
+        if (deltaBefore || !sampleLights || emitter == ~0u) return 1.0f;
+        if (!weighHits) return 0.0f; // next-event estimation already counted it
+        float lightPdf = lights_.pmf(emitter) * lights_.pdf(emitter, prevP, ray.dir, distance);
+        return powerHeuristic(prevPdf, lightPdf);
+    };
+
+    for (int depth = 0;; ++depth) { // depth = scattering events so far
+        Hit hit = accel_.intersect(ray, depth == 0);
+        if (!hit.found()) {
+            L += beta * scene_.environment.radiance(ray.dir);
+            break;
+        }
+        if (hit.onSphere) { // sphere lights emit and reflect nothing
+            const SphereLight& light = scene_.lights[hit.prim];
+            L += beta * light.radiance() * hitWeight(lights_.emitterOfLight(hit.prim), hit.t);
+            break;
+        }
+
+        SurfacePoint sp = makeSurfacePoint(scene_, hit);
+        const Material& m = scene_.materials[sp.material];
+        if (m.isEmissive()) L += beta * m.emission * hitWeight(lights_.emitterOfTriangle(hit.prim), hit.t);
+        if (depth == settings_.maxDepth) break;
+
+        // Shading frame. Where interpolated normals put the viewer behind the surface that the
+        // geometry shows (silhouettes of smooth meshes), trust the geometry.
+        Vec3 wo = -ray.dir;
+        Vec3 n = sp.ns;
+        if (glm::dot(wo, n) * glm::dot(wo, sp.ng) <= 0.0f) n = sp.ng;
+        Frame frame(n);
+        Vec3 woLocal = frame.toLocal(wo);
+        Spectrum kd = m.kd;
+        if (m.kdTexture >= 0) kd *= lookupTexture(scene_.textures[m.kdTexture], sp.uv);
+        LabBsdf bsdf = LabBsdf::make(m, kd, woLocal.z, settings_.hemisphere);
+        if (bsdf.isBlack()) break;
+
+        // Next-event estimation: one emitter, one point on it, one shadow ray. The sample values
+        // are drawn even when unused so that every depth reads the same dimensions.
+        float uLight = sampler.get1D();
+        Vec2 uLightPoint = sampler.get2D();
+        if (sampleLights && bsdf.hasNonDelta()) {
+            float pmf;
+            size_t e = lights_.choose(uLight, pmf);
+            LightSample ls = lights_.sample(e, sp.p, uLightPoint);
+            Vec3 wiLocal = frame.toLocal(ls.wi);
+            // The shading and the geometric normal must agree on the side wi leaves from, or the
+            // shadow ray would start on the wrong side of the surface.
+            if (ls.pdf > 0.0f && glm::dot(ls.wi, sp.ng) * wiLocal.z > 0.0f) {
+                Spectrum f = bsdf.eval(woLocal, wiLocal);
+                if (!isBlack(f) && !isBlack(ls.radiance)) {
+                    ++counts.shadow;
+                    bool blocked;
+                    const Emitter& em = lights_.emitter(e);
+                    if (em.kind == Emitter::Kind::Triangle) {
+                        Vec3 from = offsetRayOrigin(sp.p, sp.pError, sp.ng, ls.wi);
+                        Vec3 to = offsetRayOrigin(ls.point, ls.pointError, ls.normal, -ls.wi);
+                        Vec3 d = to - from;
+                        float len = glm::length(d);
+                        blocked = !(len > 0.0f) || accel_.occluded(Ray{from, d / len}, len);
+                    } else {
+                        int skip = em.kind == Emitter::Kind::Sphere ? int(em.index) : -1;
+                        blocked = accel_.occluded(spawnRay(sp, ls.wi), ls.distance, skip);
+                    }
+                    if (!blocked) {
+                        float w = (ls.delta || !weighHits) ? 1.0f
+                                                           : powerHeuristic(pmf * ls.pdf, bsdf.pdf(woLocal, wiLocal));
+                        L += beta * f * ls.radiance * (w / (pmf * ls.pdf));
+                    }
+                }
+            }
+        }
+
+        // Sample the BSDF to continue the path.
+        float uLobe = sampler.get1D();
+        Vec2 uDir = sampler.get2D();
+        BsdfSample bs;
+        if (!bsdf.sample(woLocal, uLobe, uDir, bs)) break;
+        Vec3 wi = frame.toWorld(bs.wi);
+        if ((glm::dot(wi, sp.ng) > 0.0f) != (bs.wi.z > 0.0f)) break; // see the shadow-ray note
+        beta *= bs.weight;
+        etaScale *= bs.radianceScale;
+        deltaBefore = bs.delta;
+        prevPdf = bs.pdf;
+        prevP = sp.p;
+
+        // Russian roulette on the throughput without the refraction scaling, so paths inside
+        // glass are not cut for carrying radiance that is only compressed.
+        float uRoulette = sampler.get1D();
+        if (depth + 1 >= kRouletteDepth) {
+            float q = std::min(1.0f, maxComponent(beta / etaScale));
+            if (uRoulette >= q) break;
+            beta /= q;
+        }
+        if (isBlack(beta)) break;
+        ray = spawnRay(sp, wi);
+        ++counts.continuation;
+    }
+
+    if (!isFinite(L) || L.x < 0.0f || L.y < 0.0f || L.z < 0.0f) {
+        ++counts.discarded;
+        return Spectrum(0.0f);
+    }
+    return L;
+}
+
+} // namespace pt

@@ -1,0 +1,29 @@
+// The per-sample path loop: next-event estimation, BSDF sampling and multiple importance
+// sampling (power heuristic) between them, Russian roulette. Orchestration (tiles, threads,
+// film) lives in render/renderer.h.
+#pragma once
+
+#include "accel/accel.h"
+#include "light/light_set.h"
+#include "render/render_settings.h"
+#include "sampling/sampler.h"
+#include "scene/scene.h"
+
+namespace pt {
+
+class PathTracer {
+public:
+    PathTracer(const Scene& scene, const Accel& accel, const LightSet& lights, const RenderSettings& settings)
+        : scene_(scene), accel_(accel), lights_(lights), settings_(settings) {}
+
+    // Radiance arriving at the camera along `ray`.
+    Spectrum trace(const Ray& cameraRay, IndependentSampler& sampler, RayCounts& counts) const;
+
+private:
+    const Scene& scene_;
+    const Accel& accel_;
+    const LightSet& lights_;
+    const RenderSettings& settings_;
+};
+
+} // namespace pt

@@ -1,0 +1,34 @@
+// Camera rays of the lab's pinhole camera: vertical field of view, image row 0 at the top.
+#pragma once
+
+#include "accel/accel.h"
+#include "scene/scene.h"
+
+namespace pt {
+
+class PinholeCamera {
+public:
+    PinholeCamera(const Camera& c, int width, int height) : origin_(c.position), width_(width), height_(height) {
+        Vec3 forward = glm::normalize(c.target - c.position);
+        Vec3 right = glm::normalize(glm::cross(forward, c.up)); // cameraup need not be orthogonal
+        Vec3 up = glm::cross(right, forward);
+        float tanY = std::tan(glm::radians(0.5f * c.fovY));
+        float tanX = tanY * float(width) / float(height);
+        forward_ = forward;
+        right_ = right * tanX;
+        up_ = up * tanY;
+    }
+
+    // (px, py) in pixel units from the top-left corner of the image.
+    Ray generate(float px, float py) const {
+        float x = 2.0f * px / float(width_) - 1.0f;
+        float y = 1.0f - 2.0f * py / float(height_);
+        return Ray{origin_, glm::normalize(forward_ + x * right_ + y * up_)};
+    }
+
+private:
+    Vec3 origin_, forward_, right_, up_;
+    int width_, height_;
+};
+
+} // namespace pt

@@ -1,0 +1,38 @@
+// Options that change how a path is traced (not where the image goes).
+#pragma once
+
+#include "material/lab_bsdf.h"
+
+#include <cstdint>
+
+namespace pt {
+
+// Which estimators of direct light a path uses. Mis is the default: the other two exist for the
+// convergence study and for users who want to see what each strategy alone does.
+enum class LightSampling { Mis, Nee, Bsdf };
+
+struct RenderSettings {
+    int maxDepth = 16;   // most scattering events on a path: 0 = emitters seen directly, 1 = direct light
+    uint64_t seed = 0;
+    LightSampling lightSampling = LightSampling::Mis;
+    HemisphereSampling hemisphere = HemisphereSampling::Cosine;
+};
+
+// Ray and sample counts, summed per tile and then over the image.
+struct RayCounts {
+    uint64_t camera = 0;
+    uint64_t continuation = 0; // rays after a scattering event (BSDF-sampled)
+    uint64_t shadow = 0;
+    uint64_t discarded = 0; // samples that came out NaN or infinite and were dropped
+
+    uint64_t total() const { return camera + continuation + shadow; }
+    RayCounts& operator+=(const RayCounts& o) {
+        camera += o.camera;
+        continuation += o.continuation;
+        shadow += o.shadow;
+        discarded += o.discarded;
+        return *this;
+    }
+};
+
+} // namespace pt

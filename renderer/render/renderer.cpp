@@ -1,0 +1,80 @@
+#include "render/renderer.h"
+
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <xmmintrin.h>
+#include <pmmintrin.h>
+
+#include <chrono>
+
+namespace pt {
+
+Renderer::Renderer(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
+                   const RenderSettings& settings)
+    : scene_(scene), settings_(settings), lights_(scene), camera_(camera, width, height),
+      tracer_(scene, accel, lights_, settings_), width_(width), height_(height),
+      tilesX_((width + kTileSize - 1) / kTileSize), tilesY_((height + kTileSize - 1) / kTileSize) {}
+
+RayCounts Renderer::renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress) const {
+    tbb::combinable<RayCounts> counts;
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, tileCount(), 1),
+        [&](const tbb::blocked_range<size_t>& range) {
+            // Embree asks for flush-to-zero and denormals-are-zero on every tracing thread.
+            _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+            _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+            RayCounts& local = counts.local();
+            IndependentSampler sampler;
+            for (size_t tile = range.begin(); tile != range.end(); ++tile) {
+                if (progress && progress->cancel.load(std::memory_order_relaxed)) return;
+                int x0 = int(tile % tilesX_) * kTileSize, y0 = int(tile / tilesX_) * kTileSize;
+                int x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
+                for (int y = y0; y < y1; ++y)
+                    for (int x = x0; x < x1; ++x) {
+                        uint32_t pixel = uint32_t(y) * uint32_t(width_) + uint32_t(x);
+                        glm::dvec3 sum(0.0), sumSq(0.0);
+                        for (uint32_t s = first; s < last; ++s) {
+                            sampler.startPixelSample(pixel, s, settings_.seed);
+                            Vec2 jitter = sampler.get2D(); // box filter: uniform inside the pixel
+                            Ray ray = camera_.generate(float(x) + jitter.x, float(y) + jitter.y);
+                            glm::dvec3 L(tracer_.trace(ray, sampler, local));
+                            sum += L;
+                            sumSq += L * L;
+                        }
+                        film.add(pixel, sum, sumSq, last - first);
+                    }
+                if (progress) progress->tilesDone.fetch_add(1, std::memory_order_relaxed);
+            }
+        },
+        tbb::simple_partitioner());
+    RayCounts total;
+    counts.combine_each([&](const RayCounts& c) { total += c; });
+    return total;
+}
+
+RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
+                         uint32_t spp, int threads, const RenderSettings& settings, RenderProgress* progress) {
+    RenderResult result{Film(width, height), {}};
+    Renderer renderer(scene, accel, camera, width, height, settings);
+    // Passes of a few samples each keep progress smooth and let a cancel request stop the render
+    // within one pass; the film counts samples per pixel, so what was done stays usable.
+    uint32_t passSize = std::max<uint32_t>(1, spp / 32);
+    uint32_t passes = (spp + passSize - 1) / passSize;
+    if (progress) progress->tilesTotal = uint64_t(passes) * renderer.tileCount();
+
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    auto start = std::chrono::steady_clock::now();
+    arena.execute([&] {
+        for (uint32_t first = 0; first < spp; first += passSize) {
+            if (progress && progress->cancel.load()) break;
+            uint32_t last = std::min(spp, first + passSize);
+            result.rays += renderer.renderSamples(result.film, first, last, progress);
+        }
+        if (progress && progress->cancel.load()) result.cancelled = true;
+    });
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+} // namespace pt

@@ -1,0 +1,59 @@
+// Orchestration of a render: the image is cut into tiles that a oneTBB pool takes dynamically;
+// every pixel's samples come from its own (pixel, sample index, seed) streams, so the image does
+// not depend on the thread count or on the order tiles finish.
+#pragma once
+
+#include "accel/accel.h"
+#include "light/light_set.h"
+#include "render/film.h"
+#include "render/path_tracer.h"
+#include "render/pinhole_camera.h"
+#include "render/render_settings.h"
+
+#include <atomic>
+
+namespace pt {
+
+// Shared between a render and whoever watches it (a progress line, a signal handler).
+struct RenderProgress {
+    std::atomic<uint64_t> tilesDone{0};
+    uint64_t tilesTotal = 0;
+    std::atomic<bool> cancel{false};
+};
+
+class Renderer {
+public:
+    static constexpr int kTileSize = 16;
+
+    Renderer(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
+             const RenderSettings& settings);
+
+    // Adds samples [first, last) of every pixel to `film`, in parallel on the calling thread's
+    // task arena. Returns the rays traced.
+    RayCounts renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress = nullptr) const;
+
+    size_t tileCount() const { return size_t(tilesX_) * tilesY_; }
+
+private:
+    const Scene& scene_;
+    RenderSettings settings_;
+    LightSet lights_;
+    PinholeCamera camera_;
+    PathTracer tracer_;
+    int width_, height_, tilesX_, tilesY_;
+};
+
+struct RenderResult {
+    Film film;
+    RayCounts rays;
+    double seconds = 0.0; // wall-clock time of rendering, excluding scene load and BVH build
+    bool cancelled = false;
+};
+
+// Renders `spp` samples per pixel with `threads` threads (0: all hardware threads), in passes so
+// that progress can be reported and a cancel request is honoured between passes.
+RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
+                         uint32_t spp, int threads, const RenderSettings& settings,
+                         RenderProgress* progress = nullptr);
+
+} // namespace pt

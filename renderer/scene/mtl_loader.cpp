@@ -1,0 +1,276 @@
+#include "scene/mtl_loader.h"
+
+#include "image/texture_io.h"
+#include "scene/text_parser.h"
+
+#include <filesystem>
+#include <optional>
+
+namespace pt {
+namespace {
+
+enum class Block { None, Material, Light, Camera };
+
+// A material as written, before the metallic (Pm) rule rewrites it into the lab tree.
+struct PendingMaterial {
+    Material m;
+    std::optional<float> metallic;
+    size_t line = 0;
+};
+
+struct PendingLight {
+    SphereLight light;
+    Spectrum color{1.0f};
+    float intensity = 1.0f;
+};
+
+struct MtlParser {
+    MtlParser(const std::string& p, Scene& s, std::unordered_map<std::string, uint32_t>& index, Warnings& w)
+        : path(p), scene(s), materialIndex(index), warnings(w) {}
+
+    const std::string& path;
+    Scene& scene;
+    std::unordered_map<std::string, uint32_t>& materialIndex;
+    Warnings& warnings;
+
+    Block block = Block::None;
+    PendingMaterial material;
+    PendingLight light;
+    Camera camera;
+    size_t blockLine = 0;
+
+    void finishBlock();
+    void finishMaterial();
+    void finishCamera();
+    void parseLine(std::string_view keyword, Tokens& t, const LineReader& lines);
+    void requireBlock(Block wanted, std::string_view keyword, const Tokens& t) const;
+    float nonNegative(Tokens& t, std::string_view keyword);
+    Spectrum nonNegativeColor(Tokens& t, std::string_view keyword);
+    float unitInterval(Tokens& t, std::string_view keyword);
+    int loadTexture(std::string_view spec, std::string_view keyword, const LineReader& lines);
+};
+
+void MtlParser::requireBlock(Block wanted, std::string_view keyword, const Tokens& t) const {
+    if (block == wanted) return;
+    const char* name = wanted == Block::Material ? "newmtl" : wanted == Block::Light ? "newlight" : "newcamera";
+    t.fail(std::string(keyword) + " outside a " + name + " block");
+}
+
+float MtlParser::nonNegative(Tokens& t, std::string_view keyword) {
+    float v = t.number(keyword);
+    if (v < 0.0f) t.fail(std::string(keyword) + ": expected a value >= 0, found " + std::to_string(v));
+    return v;
+}
+
+Spectrum MtlParser::nonNegativeColor(Tokens& t, std::string_view keyword) {
+    Spectrum c = t.color(keyword);
+    if (c.x < 0.0f || c.y < 0.0f || c.z < 0.0f)
+        t.fail(std::string(keyword) + ": expected values >= 0");
+    return c;
+}
+
+float MtlParser::unitInterval(Tokens& t, std::string_view keyword) {
+    float v = t.number(keyword);
+    if (v < 0.0f || v > 1.0f)
+        t.fail(std::string(keyword) + ": expected a value in [0, 1], found " + std::to_string(v));
+    return v;
+}
+
+int MtlParser::loadTexture(std::string_view spec, std::string_view keyword, const LineReader& lines) {
+    std::string where = path + ":" + std::to_string(lines.lineNumber()) + ": ";
+    if (spec.empty()) throw LoadError(path, lines.lineNumber(), std::string(keyword) + ": expected a file name");
+    std::string file(spec);
+    if (spec.front() == '-') {
+        // Texture options (-s, -o, -bm, ...) are not supported; the file name is the last token.
+        file = std::string(spec.substr(spec.find_last_of(" \t") + 1));
+        warnings.add(where + std::string(keyword) + ": texture options ignored, using \"" + file + "\"");
+    }
+    std::filesystem::path full = std::filesystem::path(path).parent_path() / file;
+    for (size_t i = 0; i < scene.textures.size(); ++i)
+        if (scene.textures[i].path == full.string()) return int(i);
+    std::string error;
+    Texture tex;
+    if (!readTexture(full.string(), tex, error)) {
+        warnings.add(where + std::string(keyword) + ": " + error + "; using the plain colour instead");
+        return -1;
+    }
+    scene.textures.push_back(std::move(tex));
+    return int(scene.textures.size() - 1);
+}
+
+void MtlParser::finishMaterial() {
+    Material m = material.m;
+    if (material.metallic) {
+        // The PBR extension: metallic m mixes the dielectric's F0 towards Ks, the blend is always
+        // on, the mirror is white and the diffuse part fades out with m.
+        float m01 = *material.metallic;
+        float f0 = sqr((m.eta - 1.0f) / (m.eta + 1.0f));
+        m.r0 = glm::mix(Spectrum(f0), m.ks, m01);
+        m.blend = 1.0f;
+        m.ks = Spectrum(1.0f);
+        m.kd = m.kd * (1.0f - m01);
+    }
+    if (materialIndex.count(m.name))
+        warnings.add(path + ":" + std::to_string(material.line) + ": material \"" + m.name +
+                     "\" defined again; the later definition wins");
+    materialIndex[m.name] = uint32_t(scene.materials.size());
+    scene.materials.push_back(std::move(m));
+}
+
+void MtlParser::finishCamera() {
+    Vec3 dir = camera.target - camera.position;
+    auto fail = [&](const std::string& what) {
+        throw LoadError(path, blockLine, "camera \"" + camera.name + "\": " + what);
+    };
+    if (glm::length(dir) == 0.0f) fail("cameraposition equals cameratarget; expected distinct points");
+    if (glm::length(camera.up) == 0.0f || glm::length(glm::cross(dir, camera.up)) <= 1e-6f * glm::length(dir) * glm::length(camera.up))
+        fail("cameraup is zero or parallel to the viewing direction");
+    if (!(camera.fovY > 0.0f && camera.fovY < 180.0f)) fail("camerafov must be in (0, 180) degrees");
+    scene.cameras.push_back(camera);
+}
+
+void MtlParser::finishBlock() {
+    switch (block) {
+    case Block::Material: finishMaterial(); break;
+    case Block::Light:
+        light.light.intensity = light.color * light.intensity;
+        scene.lights.push_back(light.light);
+        break;
+    case Block::Camera: finishCamera(); break;
+    case Block::None: break;
+    }
+    block = Block::None;
+}
+
+void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader& lines) {
+    auto is = [&](std::string_view k) { return equalsIgnoreCase(keyword, k); };
+    auto blockName = [&](const char* kind) {
+        std::string_view name = t.restOfLine();
+        if (name.empty()) t.fail(std::string(kind) + ": expected a name");
+        return std::string(name);
+    };
+
+    if (is("newmtl")) {
+        finishBlock();
+        block = Block::Material;
+        blockLine = lines.lineNumber();
+        material = PendingMaterial{};
+        material.m.name = blockName("newmtl");
+        material.line = lines.lineNumber();
+        return;
+    }
+    if (is("newlight")) {
+        finishBlock();
+        block = Block::Light;
+        blockLine = lines.lineNumber();
+        light = PendingLight{};
+        light.light.name = blockName("newlight");
+        return;
+    }
+    if (is("newcamera")) {
+        finishBlock();
+        block = Block::Camera;
+        blockLine = lines.lineNumber();
+        camera = Camera{};
+        camera.name = blockName("newcamera");
+        return;
+    }
+
+    // Materials.
+    Material& m = material.m;
+    if (is("Kd") || is("diffuseReflectance")) {
+        requireBlock(Block::Material, keyword, t);
+        m.kd = nonNegativeColor(t, keyword);
+    } else if (is("map_Kd") || is("diffuseReflectanceMap")) {
+        requireBlock(Block::Material, keyword, t);
+        m.kdTexture = loadTexture(t.restOfLine(), keyword, lines);
+        return;
+    } else if (is("Ks") || is("specularReflectance")) {
+        requireBlock(Block::Material, keyword, t);
+        m.ks = nonNegativeColor(t, keyword);
+    } else if (is("reflat0deg")) {
+        requireBlock(Block::Material, keyword, t);
+        m.r0 = nonNegativeColor(t, keyword);
+        if (maxComponent(m.r0) > 1.0f) t.fail("reflat0deg: expected values in [0, 1]");
+    } else if (is("reflat90deg")) {
+        requireBlock(Block::Material, keyword, t);
+        m.blend = unitInterval(t, keyword);
+    } else if (is("transparency") || is("Tr")) {
+        requireBlock(Block::Material, keyword, t);
+        m.transparency = unitInterval(t, keyword);
+    } else if (is("d")) {
+        requireBlock(Block::Material, keyword, t);
+        m.transparency = 1.0f - unitInterval(t, keyword);
+    } else if (is("indexofrefraction") || is("Ni")) {
+        requireBlock(Block::Material, keyword, t);
+        m.eta = t.number(keyword);
+        if (!(m.eta > 0.0f)) t.fail(std::string(keyword) + ": expected an index of refraction > 0");
+    } else if (is("specularroughness")) {
+        requireBlock(Block::Material, keyword, t);
+        m.roughness = nonNegative(t, keyword);
+    } else if (is("emittance") || is("Ke")) {
+        requireBlock(Block::Material, keyword, t);
+        m.emission = nonNegativeColor(t, keyword);
+    } else if (is("Pm")) {
+        requireBlock(Block::Material, keyword, t);
+        material.metallic = unitInterval(t, keyword);
+    }
+    // Lights.
+    else if (is("lightposition")) {
+        requireBlock(Block::Light, keyword, t);
+        light.light.center = t.vec3(keyword);
+    } else if (is("lightcolor")) {
+        requireBlock(Block::Light, keyword, t);
+        light.color = nonNegativeColor(t, keyword);
+    } else if (is("lightradius")) {
+        requireBlock(Block::Light, keyword, t);
+        light.light.radius = nonNegative(t, keyword);
+    } else if (is("lightintensity")) {
+        requireBlock(Block::Light, keyword, t);
+        light.intensity = nonNegative(t, keyword);
+    }
+    // Cameras.
+    else if (is("cameraposition")) {
+        requireBlock(Block::Camera, keyword, t);
+        camera.position = t.vec3(keyword);
+    } else if (is("cameratarget")) {
+        requireBlock(Block::Camera, keyword, t);
+        camera.target = t.vec3(keyword);
+    } else if (is("cameraup")) {
+        requireBlock(Block::Camera, keyword, t);
+        camera.up = t.vec3(keyword);
+    } else if (is("camerafov")) {
+        requireBlock(Block::Camera, keyword, t);
+        camera.fovY = t.number(keyword);
+    } else {
+        std::string k = toLower(keyword);
+        warnings.once("mtl:" + k, path + ":" + std::to_string(lines.lineNumber()) + ": unknown keyword \"" +
+                                      std::string(keyword) + "\" ignored (reported once)");
+        return;
+    }
+    t.expectEnd(keyword);
+}
+
+} // namespace
+
+void parseMtl(std::string_view text, const std::string& path, Scene& scene,
+              std::unordered_map<std::string, uint32_t>& materialIndex, Warnings& warnings) {
+    MtlParser parser(path, scene, materialIndex, warnings);
+    LineReader lines(text, path);
+    std::string_view line;
+    while (lines.next(line)) {
+        Tokens t(line, lines);
+        if (t.empty()) continue;
+        std::string_view keyword = t.word();
+        parser.parseLine(keyword, t, lines);
+    }
+    parser.finishBlock();
+}
+
+void loadMtl(const std::string& path, Scene& scene,
+             std::unordered_map<std::string, uint32_t>& materialIndex, Warnings& warnings) {
+    std::string text = readTextFile(path);
+    parseMtl(text, path, scene, materialIndex, warnings);
+}
+
+} // namespace pt

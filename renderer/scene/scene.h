@@ -1,0 +1,90 @@
+// The scene as flat arrays: what loaders produce and what the renderer reads. No scene graph:
+// one triangle soup with per-triangle material, a list of cameras, lights and materials.
+#pragma once
+
+#include "core/math.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pt {
+
+// Pinhole camera looking from position at target; fovY is the vertical field of view in degrees.
+struct Camera {
+    std::string name;
+    Vec3 position{0.0f, 0.0f, 0.0f};
+    Vec3 target{0.0f, 0.0f, -1.0f};
+    Vec3 up{0.0f, 1.0f, 0.0f};
+    float fovY = 45.0f;
+};
+
+// The lab's light: a sphere of radius r emitting uniform radiance intensity / (pi r^2), so a
+// facing point at distance d from the centre receives irradiance intensity / d^2.
+// radius == 0 makes it a point light of radiant intensity `intensity` (W/sr).
+struct SphereLight {
+    std::string name;
+    Vec3 center{0.0f};
+    float radius = 0.0f;
+    Spectrum intensity{1.0f}; // lightintensity * lightcolor
+
+    bool isPoint() const { return radius <= 0.0f; }
+    Spectrum radiance() const { return intensity / (kPi * radius * radius); }
+};
+
+// Parameters of the lab material tree (see material/lab_bsdf.h for how they combine):
+//   f  = w * FresnelBlend(R0)[reflect: Spec(Ks), otherwise: B1] + (1 - w) * B1
+//   B1 = T * Refr(eta) + (1 - T) * Diffuse(Kd)
+struct Material {
+    std::string name;
+    Spectrum kd{0.7f};            // Lambert reflectance (Kd, diffuseReflectance)
+    int kdTexture = -1;           // index into Scene::textures, multiplies kd (map_Kd)
+    Spectrum ks{1.0f};            // mirror colour (Ks, specularReflectance)
+    Spectrum r0{0.0f};            // Fresnel reflectance at normal incidence (reflat0deg)
+    float blend = 0.0f;           // w, weight of the Fresnel blend (reflat90deg)
+    float transparency = 0.0f;    // T (transparency, Tr, 1 - d)
+    float eta = 1.0f;             // index of refraction inside the surface (Ni)
+    float roughness = 0.001f;     // microfacet alpha (specularroughness); <= 0.001 is smooth
+    Spectrum emission{0.0f};      // emitted radiance, both sides (Ke, emittance)
+
+    bool isEmissive() const { return !isBlack(emission); }
+};
+
+// Linear RGB texels, row 0 at the top of the image (v = 1 in texture space).
+struct Texture {
+    std::string path;
+    int width = 0, height = 0;
+    std::vector<Spectrum> texels;
+};
+
+// Radiance seen by rays that leave the scene: `sky` for directions with y > 0, else `ground`.
+struct Environment {
+    Spectrum sky{0.5f, 0.6f, 0.7f};
+    Spectrum ground{0.05f, 0.025f, 0.001f};
+
+    Spectrum radiance(const Vec3& dir) const { return dir.y > 0.0f ? sky : ground; }
+    bool isBlack() const { return pt::isBlack(sky) && pt::isBlack(ground); }
+};
+
+struct Scene {
+    std::string path; // file it was loaded from, for messages and metadata
+
+    // Geometry. Each triangle corner has its own position, normal and uv index, as in OBJ.
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;
+    std::vector<Vec2> uvs;
+    std::vector<glm::uvec3> triPositions;
+    std::vector<glm::ivec3> triNormals; // -1 where the face has no normals; empty if none has
+    std::vector<glm::ivec3> triUvs;     // -1 where the face has no uvs; empty if none has
+    std::vector<uint32_t> triMaterial;
+
+    std::vector<Material> materials;
+    std::vector<Texture> textures;
+    std::vector<SphereLight> lights;
+    std::vector<Camera> cameras;
+    Environment environment;
+
+    size_t triangleCount() const { return triPositions.size(); }
+};
+
+} // namespace pt

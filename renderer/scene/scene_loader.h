@@ -1,0 +1,18 @@
+// Entry point for loading any supported scene file.
+#pragma once
+
+#include "scene/load_error.h"
+#include "scene/scene.h"
+
+#include <string>
+
+namespace pt {
+
+// Loads a scene by its extension (.obj). Afterwards the scene has at least one camera: if the
+// file defines none, one framing the whole scene is added and a warning says so.
+Scene loadScene(const std::string& path, Warnings& warnings);
+
+// Axis-aligned bounds of all triangle vertices and lights.
+void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi);
+
+} // namespace pt

@@ -1,0 +1,60 @@
+// Line and token reading shared by the text scene formats (OBJ, MTL). Every error names the file
+// and line; numbers are parsed with std::from_chars (locale-independent, no allocation).
+#pragma once
+
+#include "core/math.h"
+#include "scene/load_error.h"
+
+#include <string>
+#include <string_view>
+
+namespace pt {
+
+// Reads a whole file into memory, or throws a LoadError saying why it could not.
+std::string readTextFile(const std::string& path);
+
+// Splits a buffer into lines; accepts "\n" and "\r\n" endings and a missing final newline.
+class LineReader {
+public:
+    LineReader(std::string_view text, const std::string& file) : text_(text), file_(file) {}
+
+    bool next(std::string_view& line);
+    size_t lineNumber() const { return line_; }
+    const std::string& file() const { return file_; }
+
+private:
+    std::string_view text_;
+    size_t pos_ = 0;
+    size_t line_ = 0;
+    const std::string& file_;
+};
+
+// Tokens of one line, with typed readers that throw a LoadError naming file, line and keyword.
+class Tokens {
+public:
+    Tokens(std::string_view line, const LineReader& where) : rest_(line), where_(where) {}
+
+    bool empty();                 // true when only whitespace or a comment remains
+    std::string_view word();      // next whitespace-separated token ("" at the end)
+    std::string_view restOfLine(); // the remaining text, trimmed
+    float number(std::string_view what);
+    int integer(std::string_view what);
+    Vec3 vec3(std::string_view what);
+    // One value replicated to three channels, or three values (the MTL colour forms).
+    Spectrum color(std::string_view what);
+    void expectEnd(std::string_view keyword);
+
+    [[noreturn]] void fail(const std::string& message) const;
+
+private:
+    void skipSpace();
+
+    std::string_view rest_;
+    const LineReader& where_;
+};
+
+// Case-insensitive ASCII comparison, for MTL keywords.
+bool equalsIgnoreCase(std::string_view a, std::string_view b);
+std::string toLower(std::string_view s);
+
+} // namespace pt
