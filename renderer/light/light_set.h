@@ -24,7 +24,8 @@ struct LightSample {
     float pdf = 0.0f;     // solid-angle density, emitter choice excluded; 0 means no sample
     bool delta = false;   // point light: cannot be hit by BSDF sampling
     // For triangles: the point, its error bound and normal, to offset the shadow ray's end.
-    Vec3 point, pointError, normal;
+    Vec3 point, normal;
+    float pointError = 0.0f;
 };
 
 class LightSet {

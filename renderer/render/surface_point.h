@@ -10,7 +10,7 @@ namespace pt {
 
 struct SurfacePoint {
     Vec3 p;
-    Vec3 pError;
+    float pError; // bound on |p - true surface point|, see accel/ray_offset.h
     Vec3 ng; // unit geometric normal, on the outside as the vertex normals define it
     Vec3 ns; // unit shading normal, same hemisphere as ng
     Vec2 uv;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -34,7 +35,7 @@ public:
     size_t sample(float u, float* pmfOut, float* uRemapped = nullptr) const {
         // The last i with cdf[i] <= u; it always has positive mass because cdf[i + 1] > u.
         auto it = std::upper_bound(cdf_.begin(), cdf_.end(), double(u));
-        size_t i = size_t(std::clamp<ptrdiff_t>(it - cdf_.begin() - 1, 0, ptrdiff_t(size()) - 1));
+        size_t i = size_t(std::clamp<std::ptrdiff_t>(it - cdf_.begin() - 1, 0, std::ptrdiff_t(size()) - 1));
         double p = cdf_[i + 1] - cdf_[i];
         *pmfOut = float(p);
         if (uRemapped) *uRemapped = std::min(float((u - cdf_[i]) / p), 0x1.fffffep-1f);

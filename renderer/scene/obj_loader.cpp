@@ -49,19 +49,17 @@ int resolveIndex(std::string_view digits, size_t count, const char* what, const 
 }
 
 Corner ObjParser::parseCorner(std::string_view token, const Tokens& t) const {
-    // Forms: v, v/vt, v//vn, v/vt/vn.
-    Corner c;
+    // Forms: v, v/vt, v//vn, v/vt/vn. Check the shape before resolving any index.
     size_t s1 = token.find('/');
+    size_t s2 = s1 == std::string_view::npos ? s1 : token.find('/', s1 + 1);
+    if (s2 != std::string_view::npos && (token.find('/', s2 + 1) != std::string_view::npos || s2 + 1 == token.size()))
+        t.fail("f: malformed vertex \"" + std::string(token.substr(0, 40)) + "\"; expected v, v/vt, v//vn or v/vt/vn");
+    Corner c;
     c.position = resolveIndex(token.substr(0, s1), scene.positions.size(), "vertex", t);
     if (s1 == std::string_view::npos) return c;
-    size_t s2 = token.find('/', s1 + 1);
     std::string_view vt = token.substr(s1 + 1, s2 == std::string_view::npos ? std::string_view::npos : s2 - s1 - 1);
     if (!vt.empty()) c.uv = resolveIndex(vt, scene.uvs.size(), "texture coordinate", t);
-    if (s2 == std::string_view::npos) return c;
-    std::string_view vn = token.substr(s2 + 1);
-    if (vn.empty() || vn.find('/') != std::string_view::npos)
-        t.fail("f: malformed vertex \"" + std::string(token.substr(0, 40)) + "\"; expected v, v/vt, v//vn or v/vt/vn");
-    c.normal = resolveIndex(vn, scene.normals.size(), "normal", t);
+    if (s2 != std::string_view::npos) c.normal = resolveIndex(token.substr(s2 + 1), scene.normals.size(), "normal", t);
     return c;
 }
 

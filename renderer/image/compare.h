@@ -1,0 +1,59 @@
+// Statistical comparison of a Monte Carlo render against a reference. Two renders of the same
+// physics never match bit for bit, so the test is on block means: per block and channel,
+// z = (mean_test - mean_ref) / sqrt(var_test + var_ref), with the variances of the block means
+// taken from the images' variance layers. The z threshold is set by a Bonferroni correction so
+// that the chance of any false failure over the whole image is `falsePositiveRate`.
+#pragma once
+
+#include "image/image_io.h"
+
+#include <string>
+#include <vector>
+
+namespace pt {
+
+struct CompareOptions {
+    int blockSize = 16;
+    double falsePositiveRate = 1e-3;
+    // Floor on the standard deviation of a block difference, as a fraction of the reference block
+    // mean: absorbs float differences between CPUs and compilers in noise-free regions (a
+    // directly seen light, the sky) without hiding a real change of a percent or more.
+    double relativeFloor = 1e-3;
+    size_t worstCount = 10;
+    // Samples per pixel of each image, when known (0 if not). With both, the test image's
+    // variance is taken as at least the reference's scaled to the test's sample count: a
+    // low-sample variance estimate misses the rare, bright paths (caustics, fireflies) exactly
+    // when the low-sample mean falls short of the reference, which would otherwise make the test
+    // fail far more often than falsePositiveRate.
+    double testSpp = 0, referenceSpp = 0;
+};
+
+struct BlockDifference {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0; // pixel rectangle [x0, x1) x [y0, y1)
+    int channel = 0;                    // 0 R, 1 G, 2 B
+    double test = 0, reference = 0;     // block means
+    double z = 0;
+};
+
+struct CompareReport {
+    std::string inputError; // non-empty: the images cannot be compared (size, NaN, ...)
+    bool statistical = false; // both images had variance layers
+    bool pass = false;
+    double relativeMse = 0;   // mean of (t - r)^2 / (r^2 + 0.01), over pixels and channels
+    double meanAbsError = 0;
+    double zThreshold = 0;
+    int blocks = 0, failedBlocks = 0;
+    std::vector<BlockDifference> worst; // largest |z| first
+    std::vector<float> blockZ;          // max |z| over channels, blocksX x blocksY, row-major
+    int blocksX = 0, blocksY = 0;
+};
+
+// Finds the variance layer ("variance") of an image, or nullptr.
+const ImageLayer* varianceLayer(const Image& image);
+
+CompareReport compareImages(const Image& test, const Image& reference, const CompareOptions& options = {});
+
+// Two-sided z threshold for a false-positive rate alpha spread over `tests` tests (Bonferroni).
+double bonferroniZ(double alpha, double tests);
+
+} // namespace pt

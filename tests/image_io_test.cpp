@@ -1,0 +1,72 @@
+#include "image/image_io.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace pt {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(ImageIo, ExrRoundTripsLayersAndMetadata) {
+    std::string path = (fs::path(::testing::TempDir()) / "pt_roundtrip.exr").string();
+    Image img;
+    img.width = 3;
+    img.height = 2;
+    for (int i = 0; i < 18; ++i) img.rgb.push_back(0.1f * i);
+    img.layers.push_back({"variance", {"R", "G", "B"}, std::vector<float>(18, 0.25f)});
+    img.metadata.emplace_back("pt:spp", "64");
+    ASSERT_EQ(writeImage(path, img), "");
+    Image back;
+    ASSERT_EQ(readImage(path, back), "");
+    EXPECT_EQ(back.width, 3);
+    EXPECT_EQ(back.rgb, img.rgb);
+    ASSERT_EQ(back.layers.size(), 1u);
+    EXPECT_EQ(back.layers[0].name, "variance");
+    EXPECT_EQ(back.layers[0].pixels, img.layers[0].pixels);
+    bool found = false;
+    for (auto& [k, v] : back.metadata) found |= k == "pt:spp" && v == "64";
+    EXPECT_TRUE(found);
+}
+
+TEST(ImageIo, PngIsSrgbEncoded) {
+    std::string path = (fs::path(::testing::TempDir()) / "pt_srgb.png").string();
+    Image img;
+    img.width = img.height = 1;
+    img.rgb = {0.0f, 0.214f, 1.0f}; // linear 0.214 is sRGB 0.5
+    ASSERT_EQ(writeImage(path, img), "");
+    Image back;
+    ASSERT_EQ(readImage(path, back), "");
+    EXPECT_NEAR(back.rgb[1], 0.214f, 0.005f);
+    EXPECT_EQ(back.rgb[0], 0.0f);
+    EXPECT_NEAR(back.rgb[2], 1.0f, 1e-6f);
+}
+
+TEST(ImageIo, OutputPathsAreCheckedBeforeRendering) {
+    EXPECT_NE(checkOutputPath("out.tiff").find("unknown extension"), std::string::npos);
+    EXPECT_NE(checkOutputPath("/no/such/folder/out.exr").find("does not exist"), std::string::npos);
+    EXPECT_EQ(checkOutputPath((fs::path(::testing::TempDir()) / "ok.png").string()), "");
+}
+
+// A failed write leaves the previous file untouched and no temporary behind.
+TEST(ImageIo, FailedWriteKeepsTheOldFile) {
+    fs::path dir = fs::path(::testing::TempDir()) / "pt_atomic";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::string path = (dir / "keep.exr").string();
+    std::ofstream(path) << "precious";
+    Image bad; // 0 x 0: the writer refuses it
+    EXPECT_NE(writeImage(path, bad), "");
+    std::ifstream in(path);
+    std::string content;
+    in >> content;
+    EXPECT_EQ(content, "precious");
+    size_t files = 0;
+    for (auto& entry : fs::directory_iterator(dir)) files += entry.is_regular_file();
+    EXPECT_EQ(files, 1u);
+}
+
+} // namespace
+} // namespace pt

@@ -1,0 +1,199 @@
+#include "material/lab_bsdf.h"
+#include "sampling/rng.h"
+#include "tests/chi_square.h"
+
+#include <gtest/gtest.h>
+
+namespace pt::test {
+namespace {
+
+Material lambert(Spectrum kd) {
+    Material m;
+    m.kd = kd;
+    return m;
+}
+
+// The lab's materials, as the MTL loader builds them.
+std::vector<std::pair<std::string, Material>> labMaterials() {
+    std::vector<std::pair<std::string, Material>> out;
+    out.emplace_back("lambert", lambert(Spectrum(0.5f, 0.7f, 0.9f)));
+    Material mirror;
+    mirror.kd = Spectrum(0.0f);
+    mirror.blend = 1.0f;
+    mirror.r0 = Spectrum(1.0f);
+    mirror.ks = Spectrum(0.9f);
+    out.emplace_back("mirror", mirror);
+    Material glass;
+    glass.blend = 1.0f;
+    glass.r0 = Spectrum(0.04f);
+    glass.transparency = 1.0f;
+    glass.eta = 1.5f;
+    out.emplace_back("glass", glass);
+    Material plastic; // Fresnel blend of a mirror over Lambert (cornellbottle2's walls)
+    plastic.kd = Spectrum(0.75f, 0.3f, 0.3f);
+    plastic.blend = 1.0f;
+    plastic.r0 = Spectrum(0.1f);
+    out.emplace_back("plastic", plastic);
+    Material mixed; // every lobe at once, linear blend w = 0.5
+    mixed.kd = Spectrum(0.6f);
+    mixed.blend = 0.5f;
+    mixed.r0 = Spectrum(0.2f, 0.3f, 0.4f);
+    mixed.transparency = 0.3f;
+    mixed.eta = 1.33f;
+    out.emplace_back("mixed", mixed);
+    return out;
+}
+
+Vec3 directionAt(float cosTheta, float phi = 0.3f) {
+    float s = safeSqrt(1.0f - cosTheta * cosTheta);
+    return Vec3(s * std::cos(phi), s * std::sin(phi), cosTheta);
+}
+
+TEST(Fresnel, SchlickEndpoints) {
+    EXPECT_FLOAT_EQ(schlickFresnel(Spectrum(0.04f), 1.0f).x, 0.04f);
+    EXPECT_FLOAT_EQ(schlickFresnel(Spectrum(0.04f), 0.0f).x, 1.0f);
+    EXPECT_FLOAT_EQ(schlickFresnel(Spectrum(0.04f), -1.0f).x, 0.04f); // |cos|
+    EXPECT_NEAR(schlickFresnel(Spectrum(0.1f), 0.5f).x, 0.1f + 0.9f * std::pow(0.5f, 5.0f), 1e-7f);
+}
+
+// Lobe weights of the collapsed tree, computed by hand from the lab's formula.
+TEST(LabBsdf, LobeWeightsFollowTheTree) {
+    Material m;
+    m.kd = Spectrum(0.5f);
+    m.ks = Spectrum(0.8f);
+    m.r0 = Spectrum(0.1f);
+    m.blend = 0.6f;
+    m.transparency = 0.25f;
+    float cosO = 0.7f;
+    float F = 0.1f + 0.9f * std::pow(0.3f, 5.0f);
+    LabBsdf b = LabBsdf::make(m, m.kd, cosO);
+    EXPECT_NEAR(b.mirror.x, 0.6f * F * 0.8f, 1e-6f);
+    EXPECT_NEAR(b.refract.x, (1.0f - 0.6f * F) * 0.25f, 1e-6f);
+    EXPECT_NEAR(b.diffuse.x, (1.0f - 0.6f * F) * 0.75f * 0.5f, 1e-6f);
+    EXPECT_NEAR(b.pMirror + b.pRefract + b.pDiffuse, 1.0f, 1e-6f);
+}
+
+TEST(LabBsdf, RefractionFollowsSnell) {
+    for (float eta : {1.33f, 1.5f, 2.4f})
+        for (float cosI : {1.0f, 0.8f, 0.3f, 0.05f}) {
+            Vec3 wo = directionAt(cosI);
+            Vec3 wt;
+            ASSERT_TRUE(refractDirection(wo, eta, wt));
+            EXPECT_NEAR(glm::length(wt), 1.0f, 1e-5f);
+            EXPECT_LT(wt.z, 0.0f);
+            float sinI = safeSqrt(1 - cosI * cosI), sinT = safeSqrt(1 - wt.z * wt.z);
+            EXPECT_NEAR(sinI, eta * sinT, 1e-5f);
+            // Reversibility: the path coming back out along wt leaves along wo.
+            Vec3 back;
+            ASSERT_TRUE(refractDirection(wt, 1.0f / eta, back));
+            EXPECT_NEAR(glm::length(back - wo), 0.0f, 1e-4f);
+        }
+    Vec3 wt;
+    EXPECT_FALSE(refractDirection(Vec3(directionAt(-0.2f)), 1.0f / 1.5f, wt)); // beyond the critical angle
+}
+
+// Delta lobes: the mirror reflects, refraction carries the (eta_o / eta_i)^2 radiance scaling and
+// total internal reflection has reflectance 1.
+TEST(LabBsdf, DeltaLobeWeights) {
+    Material glass = labMaterials()[2].second;
+    LabBsdf outside = LabBsdf::make(glass, glass.kd, 0.8f);
+    BsdfSample s;
+    Vec3 wo = directionAt(0.8f);
+    ASSERT_TRUE(outside.sample(wo, 0.99f, Vec2(0.5f), s)); // refraction (mirror prob is small)
+    EXPECT_TRUE(s.delta);
+    EXPECT_LT(s.wi.z, 0.0f);
+    float F = 0.04f + 0.96f * std::pow(0.2f, 5.0f);
+    EXPECT_NEAR(s.weight.x * outside.pRefract, (1 - F) / (1.5f * 1.5f), 1e-5f);
+    ASSERT_TRUE(outside.sample(wo, 0.0f, Vec2(0.5f), s)); // mirror
+    EXPECT_NEAR(s.wi.z, wo.z, 1e-6f);
+    EXPECT_NEAR(s.weight.x * outside.pMirror, F, 1e-5f);
+
+    Vec3 inside = directionAt(-0.2f); // from inside, beyond the critical angle of 1.5
+    LabBsdf in = LabBsdf::make(glass, glass.kd, inside.z);
+    ASSERT_TRUE(in.sample(inside, 0.999f, Vec2(0.5f), s));
+    EXPECT_NEAR(s.wi.z, inside.z, 1e-6f); // reflected, staying inside
+    EXPECT_NEAR(s.weight.x * in.pRefract, in.refract.x, 1e-5f);
+}
+
+// sample() and pdf() agree (chi-square) and sample()'s weight equals eval / pdf, for every
+// material over incident angles down to grazing, from both sides.
+TEST(LabBsdf, SamplingMatchesPdfAndEval) {
+    for (const auto& [name, m] : labMaterials())
+        for (float cosO : {1.0f, 0.7f, 0.2f, 0.01f, -0.5f})
+            for (HemisphereSampling h : {HemisphereSampling::Cosine, HemisphereSampling::Uniform}) {
+                Vec3 wo = directionAt(cosO);
+                LabBsdf b = LabBsdf::make(m, m.kd, wo.z, h);
+                Pcg32 rng(7, 11);
+                bool weightsOk = true;
+                auto r = chiSquareDirections(
+                    [&](Vec2 u, Vec3& wi) {
+                        BsdfSample s;
+                        if (!b.sample(wo, rng.nextFloat(), u, s) || s.delta) return false;
+                        float pdf = b.pdf(wo, s.wi);
+                        Spectrum f = b.eval(wo, s.wi);
+                        if (std::abs(pdf - s.pdf) > 1e-4f * pdf || glm::length(s.weight - f / pdf) > 1e-4f * glm::length(s.weight))
+                            weightsOk = false;
+                        wi = s.wi;
+                        return true;
+                    },
+                    [&](const Vec3& wi) { return double(b.pdf(wo, wi)); }, 100000);
+                EXPECT_TRUE(r.pass) << name << " cos " << cosO << ": " << r.report;
+                EXPECT_TRUE(weightsOk) << name << " cos " << cosO;
+            }
+}
+
+// White furnace per material: the expected sample weight (the albedo) never exceeds 1, and a
+// Lambert surface of albedo 1 reflects exactly 1 with cosine sampling.
+TEST(LabBsdf, AlbedoNeverAboveOne) {
+    for (auto [name, m] : labMaterials()) {
+        m.kd = Spectrum(1.0f);
+        m.ks = Spectrum(1.0f);
+        for (float cosO : {1.0f, 0.5f, 0.1f, 0.001f, -0.3f, -0.9f}) {
+            Vec3 wo = directionAt(cosO);
+            LabBsdf b = LabBsdf::make(m, m.kd, wo.z);
+            Pcg32 rng(1, 3);
+            glm::dvec3 sum(0.0), sumSq(0.0);
+            const int n = 20000;
+            for (int i = 0; i < n; ++i) {
+                BsdfSample s;
+                if (!b.sample(wo, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()), s)) continue;
+                ASSERT_TRUE(isFinite(s.weight)) << name;
+                ASSERT_GE(std::min(s.weight.x, std::min(s.weight.y, s.weight.z)), 0.0f) << name;
+                // Radiance scaling is not energy: take it out before summing.
+                glm::dvec3 w(s.weight / s.radianceScale);
+                sum += w;
+                sumSq += w * w;
+            }
+            glm::dvec3 albedo = sum / double(n);
+            glm::dvec3 stdErr = glm::sqrt(glm::max(sumSq / double(n) - albedo * albedo, 0.0) / double(n));
+            for (int c = 0; c < 3; ++c)
+                EXPECT_LE(albedo[c], 1.0 + 5.0 * stdErr[c] + 1e-6) << name << " cos " << cosO << " channel " << c;
+            if (name == "lambert") EXPECT_NEAR(albedo.x, 1.0, 1e-6) << "cos " << cosO;
+            if (name == "glass") EXPECT_NEAR(albedo.x, 1.0, 1e-6) << "cos " << cosO; // mirror + refraction, all white
+        }
+    }
+}
+
+// Directions in the surface plane and unnormalised inputs give no NaN, no Inf, nothing negative.
+TEST(LabBsdf, DegenerateDirectionsAreSafe) {
+    std::vector<Vec3> wos = {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 0, 1e-30f), Vec3(1, 0, -1e-30f),
+                             Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(3, 0, 4), Vec3(1e-20f, 0, 1e-20f)};
+    for (const auto& [name, m] : labMaterials())
+        for (const Vec3& wo : wos) {
+            LabBsdf b = LabBsdf::make(m, m.kd, wo.z);
+            for (float u1 : {0.0f, 0.3f, 0.6f, 0.9999f})
+                for (Vec2 u2 : {Vec2(0.0f), Vec2(0.5f, 0.25f), Vec2(0.9999f)}) {
+                    BsdfSample s;
+                    if (!b.sample(wo, u1, u2, s)) continue;
+                    EXPECT_TRUE(isFinite(s.wi) && isFinite(s.weight) && std::isfinite(s.pdf)) << name;
+                    EXPECT_GE(s.pdf, 0.0f);
+                    EXPECT_GE(std::min(s.weight.x, std::min(s.weight.y, s.weight.z)), 0.0f) << name;
+                    Spectrum f = b.eval(wo, s.wi);
+                    EXPECT_TRUE(isFinite(f));
+                    EXPECT_TRUE(std::isfinite(b.pdf(wo, s.wi)));
+                }
+        }
+}
+
+} // namespace
+} // namespace pt::test

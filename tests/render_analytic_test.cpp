@@ -1,0 +1,184 @@
+// Scenes whose image is known in closed form. Each would catch a wrong estimator: a missing
+// cosine or pi, a wrong pdf, a double-counted light, a self-intersecting ray.
+#include "tests/test_scenes.h"
+
+#include "scene/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+namespace pt::test {
+namespace {
+
+std::string modeName(LightSampling m) {
+    return m == LightSampling::Mis ? "mis" : m == LightSampling::Nee ? "nee" : "bsdf";
+}
+
+Camera lookAt(Vec3 from, Vec3 to, Vec3 up, float fov) {
+    Camera c;
+    c.name = "test";
+    c.position = from;
+    c.target = to;
+    c.up = up;
+    c.fovY = fov;
+    return c;
+}
+
+// A convex Lambert object of albedo a under a constant environment E is a * E wherever it is
+// seen: every bounce ray escapes. With cosine sampling each sample is exactly a * E, so any
+// deviation is a bug (a self-hit from a bad ray offset, a wrong weight), not noise.
+TEST(Analytic, ConvexLambertUnderConstantEnvironment) {
+    Scene scene = emptyScene(lookAt({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 40));
+    const Spectrum E(1.0f, 2.0f, 0.5f), a(0.2f, 0.5f, 0.8f);
+    scene.environment.sky = scene.environment.ground = E;
+    Material m;
+    m.kd = a;
+    addIcosphere(scene, Vec3(0), 1.0f, 3, addMaterial(scene, m));
+
+    Rendered r = render(scene, 32, 32, 4);
+    for (int y = 10; y < 22; ++y)
+        for (int x = 10; x < 22; ++x)
+            for (int c = 0; c < 3; ++c) ASSERT_NEAR(r.pixel(x, y)[c], a[c] * E[c], 1e-5f * E[c]) << x << "," << y;
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(r.pixel(0, 0)[c], E[c]); // background corner
+
+    // Uniform hemisphere sampling has variance but the same expectation.
+    RenderSettings uniform;
+    uniform.hemisphere = HemisphereSampling::Uniform;
+    Rendered u = render(scene, 32, 32, 64, uniform);
+    expectNear(regionStats(u, 10, 10, 22, 22), a * E, 5.0f, 1e-4f, "uniform hemisphere");
+}
+
+// Inside a closed surface of albedo a that emits Le everywhere, L = Le + a L, so L = Le / (1 - a);
+// a path of at most D scattering events gives Le (1 + a + ... + a^D). This exercises emissive
+// triangle sampling, MIS weights, Russian roulette and the depth limit together.
+struct FurnaceCase {
+    LightSampling mode;
+    float albedo;
+};
+
+void PrintTo(const FurnaceCase& c, std::ostream* os) { *os << modeName(c.mode) << " albedo " << c.albedo; }
+
+class Furnace : public ::testing::TestWithParam<FurnaceCase> {};
+
+TEST_P(Furnace, ConvergesToGeometricSeries) {
+    const FurnaceCase fc = GetParam();
+    Scene scene = emptyScene(lookAt({0.1f, 0.05f, 0}, {0.1f, 0.05f, -1}, {0, 1, 0}, 90));
+    const Spectrum Le(1.0f, 0.5f, 0.25f);
+    Material m;
+    m.kd = Spectrum(fc.albedo);
+    m.emission = Le;
+    addIcosphere(scene, Vec3(0), 1.0f, 2, addMaterial(scene, m), /*inward=*/true);
+
+    for (int depth : {0, 1, 2, 1000}) {
+        RenderSettings s;
+        s.lightSampling = fc.mode;
+        s.maxDepth = depth;
+        Rendered r = render(scene, 24, 24, 32, s);
+        float series = depth == 1000 ? 1.0f / (1.0f - fc.albedo) : 0.0f;
+        if (depth < 1000)
+            for (int k = 0; k <= depth; ++k) series += std::pow(fc.albedo, float(k));
+        expectNear(regionStats(r, 0, 0, 24, 24), Le * series, 5.0f, 1e-4f,
+                   ("max-depth " + std::to_string(depth)).c_str());
+        EXPECT_EQ(r.rays.discarded, 0u);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, Furnace,
+                         ::testing::Values(FurnaceCase{LightSampling::Mis, 0.5f}, FurnaceCase{LightSampling::Mis, 0.8f},
+                                           FurnaceCase{LightSampling::Nee, 0.5f},
+                                           FurnaceCase{LightSampling::Bsdf, 0.5f}),
+                         [](const ::testing::TestParamInfo<FurnaceCase>& info) {
+                             return modeName(info.param.mode) + "_albedo" + std::to_string(int(info.param.albedo * 10));
+                         });
+
+// A plane of reflectance Kd facing a point light of intensity I at height d: L = Kd I / (pi d^2)
+// below the light. The camera looks down past the light (point lights do not occlude).
+TEST(Analytic, PointLightOnPlane) {
+    Scene scene = emptyScene(lookAt({0, 5, 0}, {0, 0, 0}, {0, 0, -1}, 2));
+    Material m;
+    m.kd = Spectrum(0.5f, 0.6f, 0.7f);
+    uint32_t mat = addMaterial(scene, m);
+    addQuad(scene, {-10, 0, 10}, {10, 0, 10}, {10, 0, -10}, {-10, 0, -10}, mat);
+    SphereLight light;
+    light.center = Vec3(0, 2, 0);
+    light.radius = 0.0f;
+    light.intensity = Spectrum(3.0f, 2.0f, 1.0f);
+    scene.lights.push_back(light);
+
+    Rendered r = render(scene, 16, 16, 4);
+    Spectrum expected = m.kd * light.intensity / (kPi * 4.0f);
+    for (int y = 7; y < 9; ++y)
+        for (int x = 7; x < 9; ++x)
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.pixel(x, y)[c], expected[c], 2e-4f * expected[c]);
+}
+
+// The lab's sphere light: radiance I / (pi r^2) on its surface gives irradiance I / d^2 at a
+// facing point at distance d from the centre, as a point light would. Seen obliquely so that
+// the sphere does not hide the point; every direct-light strategy must agree.
+class SphereLightOnPlane : public ::testing::TestWithParam<LightSampling> {};
+
+TEST_P(SphereLightOnPlane, MatchesPointLightIrradiance) {
+    Scene scene = emptyScene(lookAt({4, 1, 0}, {0, 0, 0}, {0, 1, 0}, 1));
+    Material m;
+    m.kd = Spectrum(0.5f, 0.6f, 0.7f);
+    uint32_t mat = addMaterial(scene, m);
+    addQuad(scene, {-10, 0, 10}, {10, 0, 10}, {10, 0, -10}, {-10, 0, -10}, mat);
+    SphereLight light;
+    light.center = Vec3(0, 2, 0);
+    light.radius = 0.5f;
+    light.intensity = Spectrum(3.0f, 2.0f, 1.0f);
+    scene.lights.push_back(light);
+
+    RenderSettings s;
+    s.lightSampling = GetParam();
+    s.maxDepth = 1;
+    Rendered r = render(scene, 16, 16, GetParam() == LightSampling::Bsdf ? 1024 : 64, s);
+    Spectrum expected = m.kd * light.intensity / (kPi * 4.0f);
+    expectNear(regionStats(r, 6, 6, 10, 10), expected, 5.0f, 2e-3f, "sphere light");
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, SphereLightOnPlane,
+                         ::testing::Values(LightSampling::Mis, LightSampling::Nee, LightSampling::Bsdf),
+                         [](const ::testing::TestParamInfo<LightSampling>& info) { return modeName(info.param); });
+
+// Camera and BSDF rays that hit a sphere light see its radiance I / (pi r^2), and it reflects
+// nothing.
+TEST(Analytic, SphereLightSeenDirectly) {
+    Scene scene = emptyScene(lookAt({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 10));
+    SphereLight light;
+    light.radius = 0.5f;
+    light.intensity = Spectrum(1.0f, 2.0f, 3.0f);
+    scene.lights.push_back(light);
+    Rendered r = render(scene, 16, 16, 2);
+    Spectrum L = light.intensity / (kPi * 0.25f);
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(r.pixel(8, 8)[c], L[c]);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(r.pixel(0, 0)[c], 0.0f); // beyond the sphere: black
+}
+
+// The lab's environment: sky above the horizon, ground below.
+TEST(Analytic, EnvironmentSkyAndGround) {
+    Scene scene = emptyScene(lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60));
+    scene.environment = Environment{};
+    Rendered r = render(scene, 16, 16, 1);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(r.pixel(8, 2)[c], Environment{}.sky[c]);
+        EXPECT_EQ(r.pixel(8, 13)[c], Environment{}.ground[c]);
+    }
+}
+
+// The image depends on (pixel, sample, seed) only: any thread count gives the same bits.
+TEST(Determinism, SameImageForAnyThreadCount) {
+    Warnings w;
+    Scene scene = loadScene(PT_SOURCE_DIR "/scenes/glass.obj", w);
+    Rendered one = render(scene, 48, 48, 4, {}, 1);
+    for (int threads : {2, 3}) {
+        Rendered many = render(scene, 48, 48, 4, {}, threads);
+        ASSERT_EQ(one.mean, many.mean) << threads << " threads";
+        ASSERT_EQ(one.variance, many.variance) << threads << " threads";
+    }
+    RenderSettings other;
+    other.seed = 7;
+    EXPECT_NE(one.mean, render(scene, 48, 48, 4, other, 2).mean); // the seed does matter
+}
+
+} // namespace
+} // namespace pt::test

@@ -1,0 +1,107 @@
+#include "tests/test_scenes.h"
+
+#include "accel/accel.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace pt::test {
+
+uint32_t addMaterial(Scene& scene, const Material& m) {
+    scene.materials.push_back(m);
+    return uint32_t(scene.materials.size() - 1);
+}
+
+void addTriangle(Scene& scene, Vec3 a, Vec3 b, Vec3 c, uint32_t material) {
+    uint32_t base = uint32_t(scene.positions.size());
+    scene.positions.insert(scene.positions.end(), {a, b, c});
+    scene.triPositions.emplace_back(base, base + 1, base + 2);
+    scene.triMaterial.push_back(material);
+    if (!scene.triNormals.empty()) scene.triNormals.emplace_back(-1);
+    if (!scene.triUvs.empty()) scene.triUvs.emplace_back(-1);
+}
+
+void addQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material) {
+    addTriangle(scene, a, b, c, material);
+    addTriangle(scene, a, c, d, material);
+}
+
+void addIcosphere(Scene& scene, Vec3 center, float radius, int subdivisions, uint32_t material, bool inward) {
+    const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
+    std::vector<Vec3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                           {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    std::vector<glm::uvec3> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                 {11, 10, 2}, {10, 7, 6}, {7, 1, 8},   {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                                 {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    for (Vec3& p : v) p = glm::normalize(p);
+    for (int s = 0; s < subdivisions; ++s) {
+        std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
+        auto midpoint = [&](uint32_t a, uint32_t b) {
+            auto key = std::minmax(a, b);
+            auto it = mid.find(key);
+            if (it != mid.end()) return it->second;
+            v.push_back(glm::normalize(v[a] + v[b]));
+            return mid[key] = uint32_t(v.size() - 1);
+        };
+        std::vector<glm::uvec3> g;
+        for (const glm::uvec3& tri : f) {
+            uint32_t ab = midpoint(tri.x, tri.y), bc = midpoint(tri.y, tri.z), ca = midpoint(tri.z, tri.x);
+            g.insert(g.end(), {{tri.x, ab, ca}, {tri.y, bc, ab}, {tri.z, ca, bc}, {ab, bc, ca}});
+        }
+        f = std::move(g);
+    }
+    for (const glm::uvec3& tri : f) {
+        Vec3 a = center + radius * v[tri.x], b = center + radius * v[tri.y], c = center + radius * v[tri.z];
+        if (inward) addTriangle(scene, a, c, b, material);
+        else addTriangle(scene, a, b, c, material);
+    }
+}
+
+Scene emptyScene(const Camera& camera) {
+    Scene scene;
+    scene.path = "(test)";
+    scene.cameras.push_back(camera);
+    scene.environment.sky = scene.environment.ground = Spectrum(0.0f);
+    return scene;
+}
+
+Rendered render(const Scene& scene, int width, int height, uint32_t spp, const RenderSettings& settings, int threads) {
+    Accel accel(scene, threads);
+    RenderResult result = renderImage(scene, accel, scene.cameras[0], width, height, spp, threads, settings);
+    Rendered r;
+    r.width = width;
+    r.height = height;
+    r.mean = result.film.mean();
+    r.variance = result.film.varianceOfMean();
+    r.rays = result.rays;
+    return r;
+}
+
+RegionStats regionStats(const Rendered& r, int x0, int y0, int x1, int y1) {
+    glm::dvec3 sum(0.0), var(0.0);
+    double n = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            size_t i = 3 * (size_t(y) * r.width + x);
+            for (int c = 0; c < 3; ++c) {
+                sum[c] += r.mean[i + c];
+                var[c] += r.variance[i + c];
+            }
+            n += 1;
+        }
+    RegionStats s;
+    s.mean = Spectrum(sum / n);
+    s.stdError = Spectrum(glm::sqrt(var) / n);
+    return s;
+}
+
+void expectNear(const RegionStats& s, const Spectrum& expected, float sigmas, float relTol, const char* what) {
+    for (int c = 0; c < 3; ++c) {
+        float tol = sigmas * s.stdError[c] + relTol * std::abs(expected[c]);
+        EXPECT_NEAR(s.mean[c], expected[c], tol)
+            << what << ", channel " << c << ": standard error " << s.stdError[c];
+    }
+}
+
+} // namespace pt::test

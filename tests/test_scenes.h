@@ -1,0 +1,46 @@
+// Scenes built in code for tests, and helpers to render them and measure image regions.
+#pragma once
+
+#include "render/renderer.h"
+#include "scene/scene.h"
+
+#include <vector>
+
+namespace pt::test {
+
+uint32_t addMaterial(Scene& scene, const Material& m);
+void addTriangle(Scene& scene, Vec3 a, Vec3 b, Vec3 c, uint32_t material);
+// Corners counter-clockwise seen from the side the normal faces.
+void addQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material);
+// Subdivided icosahedron with flat faces (no vertex normals), normals facing out or in.
+void addIcosphere(Scene& scene, Vec3 center, float radius, int subdivisions, uint32_t material,
+                  bool inward = false);
+// Scene with one camera and a black environment.
+Scene emptyScene(const Camera& camera);
+
+struct Rendered {
+    int width = 0, height = 0;
+    std::vector<float> mean, variance; // RGB, variance of the pixel mean
+    RayCounts rays;
+
+    Spectrum pixel(int x, int y) const {
+        const float* p = &mean[3 * (size_t(y) * width + x)];
+        return Spectrum(p[0], p[1], p[2]);
+    }
+};
+
+Rendered render(const Scene& scene, int width, int height, uint32_t spp, const RenderSettings& settings = {},
+                int threads = 0);
+
+// Mean of the pixel means over [x0, x1) x [y0, y1) and its standard error, from the per-pixel
+// variance estimates (pixels are independent).
+struct RegionStats {
+    Spectrum mean{0.0f};
+    Spectrum stdError{0.0f};
+};
+RegionStats regionStats(const Rendered& r, int x0, int y0, int x1, int y1);
+
+// Asserts |measured - expected| <= sigmas * stdError + relTol * expected in every channel.
+void expectNear(const RegionStats& s, const Spectrum& expected, float sigmas, float relTol, const char* what);
+
+} // namespace pt::test
