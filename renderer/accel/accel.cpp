@@ -97,6 +97,7 @@ static void fillRay(RTCRay& r, const Ray& ray, float tfar) {
 }
 
 Hit Accel::intersect(const Ray& ray, bool coherent, float tfar) const {
+    if (log_) log_->push_back({ray.origin, tfar, ray.dir, coherent ? RayRecord::Kind::Camera : RayRecord::Kind::Continuation});
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     context.flags = coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
@@ -126,6 +127,7 @@ Hit Accel::intersect(const Ray& ray, bool coherent, float tfar) const {
 }
 
 bool Accel::occluded(const Ray& ray, float tfar, int skipLight) const {
+    if (log_) log_->push_back({ray.origin, tfar, ray.dir, RayRecord::Kind::Shadow});
     for (size_t i = 0; i < impl_->spheres.size(); ++i) {
         if (int(impl_->sphereLight[i]) == skipLight) continue;
         const glm::vec4& s = impl_->spheres[i];
@@ -137,6 +139,29 @@ bool Accel::occluded(const Ray& ray, float tfar, int skipLight) const {
     fillRay(r, ray, tfar);
     rtcOccluded1(impl_->scene, &context, &r);
     return r.tfar < 0.0f; // Embree sets tfar to -inf when it finds an occluder
+}
+
+size_t Accel::traceBare(const RayRecord* rays, size_t count) const {
+    size_t hits = 0;
+    for (size_t i = 0; i < count; ++i) {
+        const RayRecord& r = rays[i];
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        if (r.kind == RayRecord::Kind::Shadow) {
+            RTCRay ray;
+            fillRay(ray, Ray{r.origin, r.dir}, r.tfar);
+            rtcOccluded1(impl_->scene, &context, &ray);
+            hits += ray.tfar < 0.0f;
+        } else {
+            if (r.kind == RayRecord::Kind::Camera) context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+            RTCRayHit rh;
+            fillRay(rh.ray, Ray{r.origin, r.dir}, r.tfar);
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            rtcIntersect1(impl_->scene, &context, &rh);
+            hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+        }
+    }
+    return hits;
 }
 
 } // namespace pt

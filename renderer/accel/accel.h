@@ -5,6 +5,7 @@
 #include "scene/scene.h"
 
 #include <memory>
+#include <vector>
 
 namespace pt {
 
@@ -25,6 +26,15 @@ struct Hit {
     bool found() const { return prim != kNone; }
 };
 
+// One traced ray, as the bench records it to replay through bare Embree calls.
+struct RayRecord {
+    enum class Kind : uint8_t { Camera, Continuation, Shadow };
+    Vec3 origin;
+    float tfar;
+    Vec3 dir;
+    Kind kind;
+};
+
 class Accel {
 public:
     // Builds the BVH. `threads` bounds Embree's build threads (0: all).
@@ -39,7 +49,14 @@ public:
     // (the light being sampled; -1 for none).
     bool occluded(const Ray& ray, float tfar, int skipLight = -1) const;
 
+    // Bench support: while a log is set, every query appends its ray (single-threaded use only).
+    void setRayLog(std::vector<RayRecord>* log) { log_ = log; }
+    // Traces recorded rays with plain rtcIntersect1 / rtcOccluded1 and nothing around them.
+    // Returns the number of hits, so the work cannot be optimised away.
+    size_t traceBare(const RayRecord* rays, size_t count) const;
+
 private:
+    std::vector<RayRecord>* log_ = nullptr;
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

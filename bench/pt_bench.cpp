@@ -1,0 +1,266 @@
+// pt-bench: times cornellbottle2 (or any scene) against the lab's 4-second goal, in one process:
+// load and BVH build, K frames of 1 spp with pt render's defaults, the same rays replayed through
+// bare Embree calls (efficiency = path-tracer rays/s over bare rays/s), thread scaling, memory.
+// `pt-bench converge` runs the convergence study instead (bench/converge.cpp).
+#include "accel/accel.h"
+#include "bench/bench_common.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <pmmintrin.h>
+#include <xmmintrin.h>
+
+#include <atomic>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace pt::bench {
+namespace {
+
+constexpr double kLabGoalSeconds = 4.0;   // the lab's goal for one 1-spp frame
+constexpr double kTargetSeconds = 0.12;   // issue 3's goal on 2 cores
+
+struct Options {
+    std::string scene = "../shared/scenes/lab/cornellbottle2.obj";
+    int frames = 20;
+    int width = 512, height = 512;
+    int threads = 0;
+    bool scaling = true;
+    std::string json = "bench/results/latest.json";
+};
+
+struct FrameSeries {
+    std::vector<double> seconds;
+    RayCounts rays; // of one frame (all frames trace the same number within noise)
+    double median() const { return medianOf(seconds); }
+};
+
+// Renders `frames` 1-spp frames (sample indices first, first+1, ...) after one warm-up frame.
+FrameSeries timeFrames(const Renderer& renderer, Film& film, int frames, int threads) {
+    FrameSeries series;
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        renderer.renderSamples(film, 1000, 1001); // warm-up: caches, page faults, TBB workers
+        for (int k = 0; k < frames; ++k) {
+            auto t0 = Clock::now();
+            RayCounts rays = renderer.renderSamples(film, uint32_t(k), uint32_t(k + 1));
+            series.seconds.push_back(secondsSince(t0));
+            if (k == 0) series.rays = rays;
+        }
+    });
+    return series;
+}
+
+// Replays recorded rays once through bare Embree calls, in chunks on the calling arena's threads.
+double replayOnce(const Accel& accel, const std::vector<RayRecord>& rays) {
+    std::atomic<size_t> hits{0};
+    auto t0 = Clock::now();
+    const size_t chunk = 4096; // about a tile's worth of paths: keeps the recorded coherence
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), chunk), [&](const tbb::blocked_range<size_t>& b) {
+        _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+        _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+        hits += accel.traceBare(rays.data() + b.begin(), b.size());
+    }, tbb::simple_partitioner());
+    return secondsSince(t0);
+}
+
+double timeReplay(const Accel& accel, const std::vector<RayRecord>& rays, int threads, int repeats) {
+    std::vector<double> seconds;
+    tbb::task_arena(threads).execute([&] {
+        replayOnce(accel, rays); // warm-up
+        for (int r = 0; r < repeats; ++r) seconds.push_back(replayOnce(accel, rays));
+    });
+    return medianOf(seconds);
+}
+
+// Efficiency from interleaved pairs: a frame of the path tracer, then a bare replay of the same
+// number of rays, so both see the same machine (these machines are shared and noisy).
+struct Efficiency {
+    double ratio = 0, pathTracerRps = 0, bareRps = 0;
+};
+Efficiency measureEfficiency(const Renderer& renderer, Film& film, const Accel& accel,
+                             const std::vector<RayRecord>& rays, int threads, int pairs) {
+    std::vector<double> ratios, pt, bare;
+    tbb::task_arena(threads).execute([&] {
+        renderer.renderSamples(film, 0, 1);
+        replayOnce(accel, rays);
+        for (int k = 0; k < pairs; ++k) {
+            auto t0 = Clock::now();
+            RayCounts counts = renderer.renderSamples(film, uint32_t(k), uint32_t(k + 1));
+            double ptRps = double(counts.total()) / secondsSince(t0);
+            double bareRps = double(rays.size()) / replayOnce(accel, rays);
+            ratios.push_back(ptRps / bareRps);
+            pt.push_back(ptRps);
+            bare.push_back(bareRps);
+        }
+    });
+    return {medianOf(ratios), medianOf(pt), medianOf(bare)};
+}
+
+std::vector<RayRecord> onlyKind(const std::vector<RayRecord>& rays, RayRecord::Kind kind) {
+    std::vector<RayRecord> out;
+    for (const RayRecord& r : rays)
+        if (r.kind == kind) out.push_back(r);
+    return out;
+}
+
+int runBench(const Options& o) {
+    const int hw = tbb::this_task_arena::max_concurrency();
+    const int threads = o.threads > 0 ? o.threads : hw;
+
+    auto t0 = Clock::now();
+    Warnings warnings;
+    Scene scene = loadScene(o.scene, warnings);
+    double loadSeconds = secondsSince(t0);
+
+    auto t1 = Clock::now();
+    std::unique_ptr<Accel> accel;
+    tbb::task_arena(threads).execute([&] { accel = std::make_unique<Accel>(scene, threads); });
+    double bvhSeconds = secondsSince(t1);
+
+    RenderSettings settings; // pt render's defaults
+    Renderer renderer(scene, *accel, scene.cameras[0], o.width, o.height, settings);
+    Film film(o.width, o.height);
+
+    std::printf("pt-bench: %s, %zu triangles, %dx%d, 1 spp per frame, %d frames, %d threads\n", o.scene.c_str(),
+                scene.triangleCount(), o.width, o.height, o.frames, threads);
+    FrameSeries main = timeFrames(renderer, film, o.frames, threads);
+    const RayCounts& rays = main.rays;
+    double median = main.median();
+    double rps = double(rays.total()) / median;
+
+    // Record the rays of one frame (one thread, so the log needs no lock) and replay them bare.
+    std::vector<RayRecord> log;
+    log.reserve(size_t(rays.total() * 1.1));
+    accel->setRayLog(&log);
+    tbb::task_arena(1).execute([&] { renderer.renderSamples(film, 0, 1); });
+    accel->setRayLog(nullptr);
+    const int repeats = 5;
+    Efficiency eff = measureEfficiency(renderer, film, *accel, log, threads, std::max(5, o.frames / 2));
+    double bareRps = eff.bareRps;
+    double efficiency = eff.ratio;
+    struct KindRate {
+        const char* name;
+        RayRecord::Kind kind;
+        double rps = 0;
+        size_t count = 0;
+    };
+    KindRate kinds[] = {{"camera", RayRecord::Kind::Camera}, {"continuation", RayRecord::Kind::Continuation},
+                        {"shadow", RayRecord::Kind::Shadow}};
+    for (KindRate& k : kinds) {
+        std::vector<RayRecord> subset = onlyKind(log, k.kind);
+        k.count = subset.size();
+        k.rps = subset.empty() ? 0.0 : double(subset.size()) / timeReplay(*accel, subset, threads, repeats);
+    }
+
+    std::vector<std::pair<int, double>> scaling;
+    if (o.scaling)
+        for (int t = 1; t <= hw; ++t)
+            scaling.emplace_back(t, timeFrames(renderer, film, std::max(3, o.frames / 4), t).median());
+
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    double peakRssMb = double(usage.ru_maxrss) / 1024.0;
+
+    double pathLength = double(rays.camera + rays.continuation) / double(std::max<uint64_t>(1, rays.camera));
+    std::printf("\n  load %.3f s, BVH build %.3f s, peak memory %.0f MB\n", loadSeconds, bvhSeconds, peakRssMb);
+    std::printf("  frame: median %.4f s, min %.4f s, max %.4f s (%d frames)\n", median, minOf(main.seconds),
+                maxOf(main.seconds), o.frames);
+    std::printf("  rays per frame: camera %llu, continuation %llu, shadow %llu; %.2f segments per path\n",
+                (unsigned long long)rays.camera, (unsigned long long)rays.continuation, (unsigned long long)rays.shadow,
+                pathLength);
+    std::printf("  path tracer %.2f Mrays/s (%.2f in the interleaved pairs); bare Embree on the same rays %.2f Mrays/s;\n"
+                "  efficiency %.1f %% (median of frame/replay pairs)\n",
+                rps * 1e-6, eff.pathTracerRps * 1e-6, bareRps * 1e-6, 100.0 * efficiency);
+    std::printf("  bare Embree by kind: camera %.1f, continuation %.1f, shadow %.1f Mrays/s\n", kinds[0].rps * 1e-6,
+                kinds[1].rps * 1e-6, kinds[2].rps * 1e-6);
+    if (!scaling.empty()) {
+        std::printf("  scaling:");
+        for (auto [t, s] : scaling) std::printf("  %d thr %.4f s (x%.2f)", t, s, scaling[0].second / s);
+        std::printf("\n");
+    }
+    std::printf("\n  %-34s %10s %12s\n", "against", "seconds", "this is");
+    auto row = [&](const char* name, double seconds) {
+        std::printf("  %-34s %10.3f %11.1fx %s\n", name, seconds, seconds / median, median <= seconds ? "inside" : "OVER");
+    };
+    row("lab goal (one frame)", kLabGoalSeconds);
+    row("issue 3 target (2 cores)", kTargetSeconds);
+    row("Mitsuba 3 LLVM (reported, 2 cores)", 0.17);
+    row("Cycles (reported, 2 cores)", 0.34);
+
+    if (!o.json.empty()) {
+        std::filesystem::path dir = std::filesystem::path(o.json).parent_path();
+        if (!dir.empty()) std::filesystem::create_directories(dir);
+        Json j;
+        j.field("scene", o.scene).field("width", o.width).field("height", o.height).field("threads", threads);
+        j.field("frames", o.frames).field("seconds_per_frame_median", median);
+        j.field("seconds_per_frame_min", minOf(main.seconds)).field("seconds_per_frame_max", maxOf(main.seconds));
+        j.field("goal_seconds", kLabGoalSeconds).field("target_seconds", kTargetSeconds);
+        j.field("rays_per_second", rps).field("embree_rays_per_second", bareRps).field("efficiency", efficiency);
+        j.field("camera_rays", double(rays.camera)).field("continuation_rays", double(rays.continuation));
+        j.field("shadow_rays", double(rays.shadow)).field("segments_per_path", pathLength);
+        j.field("embree_camera_rays_per_second", kinds[0].rps);
+        j.field("embree_continuation_rays_per_second", kinds[1].rps);
+        j.field("embree_shadow_rays_per_second", kinds[2].rps);
+        j.field("load_seconds", loadSeconds).field("bvh_seconds", bvhSeconds).field("peak_rss_mb", peakRssMb);
+        std::string list = "[";
+        for (size_t i = 0; i < scaling.size(); ++i)
+            list += (i ? ", " : "") + std::string("{\"threads\": ") + std::to_string(scaling[i].first) +
+                    ", \"seconds_per_frame\": " + std::to_string(scaling[i].second) + "}";
+        j.raw("scaling", list + "]");
+        std::ofstream(o.json) << j.str();
+        std::printf("\n  wrote %s\n", o.json.c_str());
+    }
+    return 0;
+}
+
+int usage(int status) {
+    std::fputs("usage: pt-bench [--scene PATH] [--frames K] [--res WxH] [--threads N] [--no-scaling] [--json PATH]\n"
+               "       pt-bench converge --help\n"
+               "defaults: cornellbottle2 from ../shared/scenes/lab, 20 frames, 512x512, all threads,\n"
+               "          JSON to bench/results/latest.json\n",
+               status == 0 ? stdout : stderr);
+    return status;
+}
+
+} // namespace
+} // namespace pt::bench
+
+int main(int argc, char** argv) {
+    using namespace pt::bench;
+    if (argc > 1 && !std::strcmp(argv[1], "converge")) return runConverge(argc - 1, argv + 1);
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        auto next = [&]() -> std::string {
+            if (i + 1 >= argc) std::exit(usage(2));
+            return argv[++i];
+        };
+        if (a == "--scene") o.scene = next();
+        else if (a == "--frames") o.frames = std::max(1, std::stoi(next()));
+        else if (a == "--threads") o.threads = std::stoi(next());
+        else if (a == "--res") {
+            if (std::sscanf(next().c_str(), "%dx%d", &o.width, &o.height) != 2) return usage(2);
+        } else if (a == "--no-scaling") o.scaling = false;
+        else if (a == "--json") o.json = next();
+        else if (a == "-h" || a == "--help") return usage(0);
+        else return usage(2);
+    }
+    try {
+        return runBench(o);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "pt-bench: %s\n", e.what());
+        return 1;
+    }
+}
