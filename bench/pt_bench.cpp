@@ -37,6 +37,7 @@ struct Options {
     int width = 512, height = 512;
     int threads = 0;
     bool scaling = true;
+    bool configs = false;
     std::string json = "bench/results/latest.json";
 };
 
@@ -164,6 +165,36 @@ int runBench(const Options& o) {
         k.rps = subset.empty() ? 0.0 : double(subset.size()) / timeReplay(*accel, subset, threads, repeats);
     }
 
+    // Embree's build options, compared on the same recorded rays in interleaved rounds.
+    struct Config {
+        std::string name;
+        AccelOptions options;
+        std::unique_ptr<Accel> accel;
+        double buildSeconds = 0;
+        std::vector<double> seconds;
+    };
+    std::vector<Config> configs;
+    if (o.configs) {
+        for (bool robust : {true, false})
+            for (auto q : {AccelOptions::Quality::High, AccelOptions::Quality::Medium, AccelOptions::Quality::Low})
+                for (bool compact : {false, true}) {
+                    Config c;
+                    c.options = AccelOptions{q, robust, compact};
+                    c.name = std::string(robust ? "robust " : "") +
+                             (q == AccelOptions::Quality::High ? "high" : q == AccelOptions::Quality::Medium ? "medium" : "low") +
+                             (compact ? " compact" : "");
+                    auto tb = Clock::now();
+                    tbb::task_arena(threads).execute([&] { c.accel = std::make_unique<Accel>(scene, threads, c.options); });
+                    c.buildSeconds = secondsSince(tb);
+                    configs.push_back(std::move(c));
+                }
+        tbb::task_arena(threads).execute([&] {
+            for (Config& c : configs) replayOnce(*c.accel, log); // warm-up
+            for (int round = 0; round < repeats; ++round)
+                for (Config& c : configs) c.seconds.push_back(replayOnce(*c.accel, log));
+        });
+    }
+
     std::vector<std::pair<int, double>> scaling;
     if (o.scaling)
         for (int t = 1; t <= hw; ++t)
@@ -185,6 +216,12 @@ int runBench(const Options& o) {
                 rps * 1e-6, eff.pathTracerRps * 1e-6, bareRps * 1e-6, 100.0 * efficiency);
     std::printf("  bare Embree by kind: camera %.1f, continuation %.1f, shadow %.1f Mrays/s\n", kinds[0].rps * 1e-6,
                 kinds[1].rps * 1e-6, kinds[2].rps * 1e-6);
+    if (!configs.empty()) {
+        std::printf("  Embree build options on the same rays (median of %d interleaved rounds):\n", repeats);
+        for (const Config& c : configs)
+            std::printf("    %-22s build %.3f s, %6.2f Mrays/s\n", c.name.c_str(), c.buildSeconds,
+                        double(log.size()) / medianOf(c.seconds) * 1e-6);
+    }
     if (!scaling.empty()) {
         std::printf("  scaling:");
         for (auto [t, s] : scaling) std::printf("  %d thr %.4f s (x%.2f)", t, s, scaling[0].second / s);
@@ -227,6 +264,7 @@ int runBench(const Options& o) {
 
 int usage(int status) {
     std::fputs("usage: pt-bench [--scene PATH] [--frames K] [--res WxH] [--threads N] [--no-scaling] [--json PATH]\n"
+               "                [--embree-configs]   (also compare Embree's build options on the recorded rays)\n"
                "       pt-bench converge --help\n"
                "defaults: cornellbottle2 from ../shared/scenes/lab, 20 frames, 512x512, all threads,\n"
                "          JSON to bench/results/latest.json\n",
@@ -253,6 +291,7 @@ int main(int argc, char** argv) {
         else if (a == "--res") {
             if (std::sscanf(next().c_str(), "%dx%d", &o.width, &o.height) != 2) return usage(2);
         } else if (a == "--no-scaling") o.scaling = false;
+        else if (a == "--embree-configs") o.configs = true;
         else if (a == "--json") o.json = next();
         else if (a == "-h" || a == "--help") return usage(0);
         else return usage(2);

@@ -39,12 +39,13 @@ TEST(RayOffset, NoSelfIntersectionAtAnyScale) {
                     if (shape == Shape::Sliver) c = a + 1e-3f * (c - a) + 0.999f * (b - a);
                     addTriangle(scene, a, b, c, mat);
                     Accel accel(scene, 1);
+                    std::vector<ShadingTriangle> shading = buildShadingTriangles(scene);
                     for (int i = 0; i < 100; ++i) {
                         Hit hit;
                         hit.prim = 0;
                         hit.u = rng.nextFloat();
                         hit.v = rng.nextFloat() * (1.0f - hit.u);
-                        SurfacePoint sp = makeSurfacePoint(scene, hit);
+                        SurfacePoint sp = makeSurfacePoint(shading[0], hit);
                         Vec3 dir = squareToUniformSphere(Vec2(rng.nextFloat(), rng.nextFloat()));
                         if (std::abs(glm::dot(dir, sp.ng)) < 1e-3f) continue; // grazing: either side is fine
                         Ray ray = spawnRay(sp, dir);
@@ -63,7 +64,7 @@ TEST(RayOffset, NoSelfIntersectionAtAnyScale) {
 // The offset stays tiny relative to the coordinates, so contact shadows survive.
 TEST(RayOffset, OffsetIsAFewUlps) {
     Vec3 p(1000.0f, 2.0f, -3.0f);
-    float err = interpolationError(Vec3(0.3f, 0.3f, 0.4f), p, p, p);
+    float err = triangleOffsetError(p, p + Vec3(0.5f, 0, 0), p + Vec3(0, 0.5f, 0));
     Vec3 o = offsetRayOrigin(p, err, Vec3(1, 0, 0), Vec3(1, 0, 0));
     EXPECT_GT(o.x, p.x);
     EXPECT_LT(o.x - p.x, 1000.0f * 1e-5f);

@@ -22,21 +22,23 @@ static void onEmbreeError(void* user, RTCError code, const char* message) {
     if (error->empty()) *error = "Embree error " + std::to_string(int(code)) + ": " + (message ? message : "");
 }
 
-Accel::Accel(const Scene& scene, int threads) : impl_(std::make_unique<Impl>()) {
+Accel::Accel(const Scene& scene, int threads, const AccelOptions& options) : impl_(std::make_unique<Impl>()) {
     std::string config = threads > 0 ? "threads=" + std::to_string(threads) : "";
     impl_->device = rtcNewDevice(config.c_str());
     if (!impl_->device) throw LoadError("cannot create the Embree device (error " + std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
     rtcSetDeviceErrorFunction(impl_->device, onEmbreeError, &impl_->error);
 
     impl_->scene = rtcNewScene(impl_->device);
-    // ROBUST keeps rays from slipping between adjacent triangles; HIGH quality pays off for the
-    // many rays of a batch render.
-    rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
-    rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
+    int flags = (options.robust ? RTC_SCENE_FLAG_ROBUST : 0) | (options.compact ? RTC_SCENE_FLAG_COMPACT : 0);
+    RTCBuildQuality quality = options.quality == AccelOptions::Quality::High     ? RTC_BUILD_QUALITY_HIGH
+                              : options.quality == AccelOptions::Quality::Medium ? RTC_BUILD_QUALITY_MEDIUM
+                                                                                 : RTC_BUILD_QUALITY_LOW;
+    rtcSetSceneFlags(impl_->scene, RTCSceneFlags(flags));
+    rtcSetSceneBuildQuality(impl_->scene, quality);
 
     if (scene.triangleCount() > 0) {
         RTCGeometry geom = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_HIGH);
+        rtcSetGeometryBuildQuality(geom, quality);
         auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
             geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), scene.positions.size()));
         auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
@@ -70,6 +72,7 @@ float intersectSphere(const Vec3& origin, const Vec3& dir, const Vec3& center, f
     Vec3 f = origin - center;
     float b = glm::dot(f, dir);
     float c = glm::dot(f, f) - radius * radius;
+    if (c > 0.0f && b > 0.0f) return kInf; // outside and moving away: most rays, decided early
     Vec3 perp = f - b * dir; // distance from centre to the line, computed without cancellation
     float disc = radius * radius - glm::dot(perp, perp);
     if (disc < 0.0f) return kInf;

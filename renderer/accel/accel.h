@@ -35,10 +35,19 @@ struct RayRecord {
     Kind kind;
 };
 
+// How Embree builds the BVH. The defaults are chosen by pt-bench's comparison of all of them on
+// the rays of a cornellbottle2 frame (see the README's Performance section).
+struct AccelOptions {
+    enum class Quality : uint8_t { Low, Medium, High };
+    Quality quality = Quality::High;
+    bool robust = true;   // watertight triangle tests: no rays slipping between adjacent triangles
+    bool compact = false; // smaller BVH, usually slower
+};
+
 class Accel {
 public:
     // Builds the BVH. `threads` bounds Embree's build threads (0: all).
-    Accel(const Scene& scene, int threads);
+    Accel(const Scene& scene, int threads, const AccelOptions& options = {});
     ~Accel();
     Accel(const Accel&) = delete;
     Accel& operator=(const Accel&) = delete;

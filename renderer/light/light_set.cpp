@@ -1,6 +1,5 @@
 #include "light/light_set.h"
 
-#include "accel/accel.h"
 #include "accel/ray_offset.h"
 #include "light/sphere_light_sampling.h"
 #include "sampling/warp.h"
@@ -13,7 +12,11 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const SphereLight& l = scene.lights[i];
         lightEmitter_[i] = uint32_t(emitters_.size());
-        emitters_.push_back({l.isPoint() ? Emitter::Kind::Point : Emitter::Kind::Sphere, uint32_t(i)});
+        Emitter e{l.isPoint() ? Emitter::Kind::Point : Emitter::Kind::Sphere, uint32_t(i)};
+        e.center = l.center;
+        e.radius = l.radius;
+        e.radiance = l.isPoint() ? l.intensity : l.radiance();
+        emitters_.push_back(e);
         power.push_back(4.0f * kPi * average(l.intensity)); // same for a sphere and a point
     }
     bool anyEmissive = false;
@@ -28,7 +31,9 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
             float area = 0.5f * glm::length(glm::cross(b - a, c - a));
             if (!(area > 0.0f)) continue; // degenerate triangles emit nothing and are never hit
             triangleEmitter_[t] = uint32_t(emitters_.size());
-            emitters_.push_back({Emitter::Kind::Triangle, uint32_t(t)});
+            Emitter e{Emitter::Kind::Triangle, uint32_t(t)};
+            e.radiance = m.emission;
+            emitters_.push_back(e);
             power.push_back(2.0f * kPi * area * average(m.emission)); // both sides emit
         }
     }
@@ -39,25 +44,31 @@ LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {
     const Emitter& e = emitters_[i];
     LightSample s;
     if (e.kind == Emitter::Kind::Point) {
-        const SphereLight& l = scene_.lights[e.index];
-        Vec3 d = l.center - p;
+        Vec3 d = e.center - p;
         float dist2 = glm::dot(d, d);
         if (!(dist2 > 0.0f)) return s;
         s.distance = std::sqrt(dist2);
         s.wi = d / s.distance;
-        s.radiance = l.intensity / dist2;
+        s.radiance = e.radiance / dist2;
         s.pdf = 1.0f;
         s.delta = true;
         return s;
     }
     if (e.kind == Emitter::Kind::Sphere) {
-        const SphereLight& l = scene_.lights[e.index];
-        SphereCap cap = sphereCap(p, l.center, l.radius);
-        Vec3 local = cap.oneMinusCosMax >= 2.0f ? squareToUniformSphere(u) : squareToUniformCone(u, cap.oneMinusCosMax);
-        s.wi = Frame(cap.axis).toWorld(local);
-        s.distance = intersectSphere(p, s.wi, l.center, l.radius);
-        if (!(s.distance < kInf)) return s; // grazing the rim in float: no sample
-        s.radiance = l.radiance();
+        SphereCap cap = sphereCap(p, e.center, e.radius);
+        // A direction in the cap, and the distance to where it meets the sphere, from the cone
+        // angle: d cos(theta) -+ sqrt(r^2 - d^2 sin^2(theta)) (near root outside, far inside).
+        bool inside = cap.oneMinusCosMax >= 2.0f;
+        float oneMinusCos = inside ? 2.0f * u.x : u.x * cap.oneMinusCosMax;
+        float cosTheta = 1.0f - oneMinusCos;
+        float sin2Theta = oneMinusCos * (2.0f - oneMinusCos);
+        float sinTheta = safeSqrt(sin2Theta);
+        float phi = 2.0f * kPi * u.y;
+        s.wi = Frame(cap.axis).toWorld(Vec3(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta));
+        float chord = safeSqrt(e.radius * e.radius - cap.distance * cap.distance * sin2Theta);
+        s.distance = inside ? cap.distance * cosTheta + chord : cap.distance * cosTheta - chord;
+        if (!(s.distance > 0.0f)) return s;
+        s.radiance = e.radiance;
         s.pdf = sphereCapPdf(cap);
         return s;
     }
@@ -67,7 +78,7 @@ LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {
     Vec2 bary = squareToUniformTriangle(u);
     Vec3 bw(1.0f - bary.x - bary.y, bary.x, bary.y);
     s.point = bw.x * a + bw.y * b + bw.z * c;
-    s.pointError = interpolationError(bw, a, b, c);
+    s.pointError = triangleOffsetError(a, b, c);
     Vec3 n = glm::cross(b - a, c - a);
     float area2 = glm::length(n);
     s.normal = n / area2;
@@ -78,7 +89,7 @@ LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {
     s.wi = d / s.distance;
     float cosLight = std::abs(glm::dot(s.normal, s.wi));
     if (cosLight == 0.0f) return s;
-    s.radiance = scene_.materials[scene_.triMaterial[e.index]].emission;
+    s.radiance = e.radiance;
     s.pdf = dist2 / (cosLight * 0.5f * area2);
     return s;
 }
@@ -86,10 +97,7 @@ LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {
 float LightSet::pdf(size_t i, const Vec3& p, const Vec3& wi, float distance) const {
     const Emitter& e = emitters_[i];
     if (e.kind == Emitter::Kind::Point) return 0.0f;
-    if (e.kind == Emitter::Kind::Sphere) {
-        const SphereLight& l = scene_.lights[e.index];
-        return sphereCapPdf(sphereCap(p, l.center, l.radius));
-    }
+    if (e.kind == Emitter::Kind::Sphere) return sphereCapPdf(sphereCap(p, e.center, e.radius));
     const glm::uvec3& tri = scene_.triPositions[e.index];
     const Vec3 &a = scene_.positions[tri[0]], &b = scene_.positions[tri[1]], &c = scene_.positions[tri[2]];
     Vec3 n = glm::cross(b - a, c - a);

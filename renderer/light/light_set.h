@@ -13,7 +13,10 @@ namespace pt {
 struct Emitter {
     enum class Kind : uint8_t { Sphere, Point, Triangle };
     Kind kind;
-    uint32_t index; // into Scene::lights, or a triangle index
+    uint32_t index;    // into Scene::lights, or a triangle index
+    Vec3 center{0.0f}; // sphere and point lights
+    float radius = 0.0f;
+    Spectrum radiance{0.0f}; // sphere: I / (pi r^2); point: intensity I; triangle: Le
 };
 
 // A point on a light seen from a shading point, with what a shadow ray needs to reach it.
@@ -36,12 +39,13 @@ public:
     size_t size() const { return emitters_.size(); }
     const Emitter& emitter(size_t i) const { return emitters_[i]; }
 
-    // Picks an emitter for next-event estimation; u is rescaled for reuse.
-    size_t choose(float& u, float& pmf) const {
-        float remapped;
-        size_t i = distribution_.sample(u, &pmf, &remapped);
-        u = remapped;
-        return i;
+    // Picks an emitter for next-event estimation.
+    size_t choose(float u, float& pmf) const {
+        if (emitters_.size() == 1) { // the common case of one lab light: no search
+            pmf = 1.0f;
+            return 0;
+        }
+        return distribution_.sample(u, &pmf);
     }
     float pmf(size_t emitterIndex) const { return distribution_.pmf(emitterIndex); }
 

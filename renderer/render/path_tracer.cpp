@@ -43,12 +43,12 @@ Spectrum PathTracer::trace(const Ray& cameraRay, IndependentSampler& sampler, Ra
             break;
         }
         if (hit.onSphere) { // sphere lights emit and reflect nothing
-            const SphereLight& light = scene_.lights[hit.prim];
-            L += beta * light.radiance() * hitWeight(lights_.emitterOfLight(hit.prim), hit.t);
+            uint32_t e = lights_.emitterOfLight(hit.prim);
+            L += beta * lights_.emitter(e).radiance * hitWeight(e, hit.t);
             break;
         }
 
-        SurfacePoint sp = makeSurfacePoint(scene_, hit);
+        SurfacePoint sp = makeSurfacePoint(triangles_[hit.prim], hit);
         const Material& m = scene_.materials[sp.material];
         if (m.isEmissive()) L += beta * m.emission * hitWeight(lights_.emitterOfTriangle(hit.prim), hit.t);
         if (depth == settings_.maxDepth) break;
@@ -61,7 +61,7 @@ Spectrum PathTracer::trace(const Ray& cameraRay, IndependentSampler& sampler, Ra
         Frame frame(n);
         Vec3 woLocal = frame.toLocal(wo);
         Spectrum kd = m.kd;
-        if (m.kdTexture >= 0) kd *= lookupTexture(scene_.textures[m.kdTexture], sp.uv);
+        if (m.kdTexture >= 0) kd *= lookupTexture(scene_.textures[m.kdTexture], hitUv(scene_, hit));
         LabBsdf bsdf = LabBsdf::make(m, kd, woLocal.z, settings_.hemisphere);
         if (bsdf.isBlack()) break;
 

@@ -6,6 +6,7 @@
 #include "accel/accel.h"
 #include "light/light_set.h"
 #include "render/render_settings.h"
+#include "render/shading_triangles.h"
 #include "sampling/sampler.h"
 #include "scene/scene.h"
 
@@ -13,14 +14,16 @@ namespace pt {
 
 class PathTracer {
 public:
-    PathTracer(const Scene& scene, const Accel& accel, const LightSet& lights, const RenderSettings& settings)
-        : scene_(scene), accel_(accel), lights_(lights), settings_(settings) {}
+    PathTracer(const Scene& scene, const std::vector<ShadingTriangle>& triangles, const Accel& accel,
+               const LightSet& lights, const RenderSettings& settings)
+        : scene_(scene), triangles_(triangles), accel_(accel), lights_(lights), settings_(settings) {}
 
     // Radiance arriving at the camera along `ray`.
     Spectrum trace(const Ray& cameraRay, IndependentSampler& sampler, RayCounts& counts) const;
 
 private:
     const Scene& scene_;
+    const std::vector<ShadingTriangle>& triangles_;
     const Accel& accel_;
     const LightSet& lights_;
     const RenderSettings& settings_;

@@ -12,8 +12,8 @@ namespace pt {
 
 Renderer::Renderer(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
                    const RenderSettings& settings)
-    : scene_(scene), settings_(settings), lights_(scene), camera_(camera, width, height),
-      tracer_(scene, accel, lights_, settings_), width_(width), height_(height),
+    : scene_(scene), settings_(settings), triangles_(buildShadingTriangles(scene)), lights_(scene),
+      camera_(camera, width, height), tracer_(scene, triangles_, accel, lights_, settings_), width_(width), height_(height),
       tilesX_((width + kTileSize - 1) / kTileSize), tilesY_((height + kTileSize - 1) / kTileSize) {}
 
 RayCounts Renderer::renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress) const {

@@ -37,6 +37,7 @@ public:
 private:
     const Scene& scene_;
     RenderSettings settings_;
+    std::vector<ShadingTriangle> triangles_;
     LightSet lights_;
     PinholeCamera camera_;
     PathTracer tracer_;
