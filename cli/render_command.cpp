@@ -37,6 +37,8 @@ options (default in brackets):
   --light-sampling M     direct light by mis (light and BSDF sampling, weighted),
                          nee (light sampling only) or bsdf (BSDF sampling only) [mis]
   --hemisphere M         Lambert sampling, cosine or uniform (a diagnostic) [cosine]
+  --sampler S            sample values: sobol (Owen-scrambled Sobol points) or random
+                         (independent) [sobol]
   --aov LIST             extra EXR layers, comma-separated: variance (of the pixel mean) [none]
   -q, --quiet            print neither warnings nor progress, only the summary line
   -h, --help             show this help
@@ -106,6 +108,11 @@ RenderArgs parseArgs(int argc, char** argv) {
             if (v == "cosine") r.settings.hemisphere = HemisphereSampling::Cosine;
             else if (v == "uniform") r.settings.hemisphere = HemisphereSampling::Uniform;
             else throw UsageError("option --hemisphere: expected cosine or uniform, got \"" + v + "\"");
+        } else if (opt == "sampler") {
+            std::string v = args.value(opt);
+            if (v == "sobol") r.settings.sampler = SamplerKind::Sobol;
+            else if (v == "random") r.settings.sampler = SamplerKind::Random;
+            else throw UsageError("option --sampler: expected sobol or random, got \"" + v + "\"");
         } else if (opt == "aov") {
             std::stringstream list(args.value(opt));
             for (std::string name; std::getline(list, name, ',');) {

@@ -5,6 +5,10 @@ cornell_box: the lab's box dimensions ([-1, 1]^3, open towards the camera at z =
              emissive ceiling quad (Ke) instead of a sphere light, with a tall and a short box.
 glass:       the same room with a glass sphere (Fresnel-blended refraction) on a textured floor, a
              metal sphere (Pm 1), and a small sphere light that throws a caustic.
+mis_lights:  where each direct-light strategy fails somewhere: a large emissive panel standing on
+             a diffuse floor (light sampling by area is noisy next to it, BSDF sampling is not), a
+             tiny bright sphere light (BSDF sampling almost never finds it), and a mirror sphere
+             and a Fresnel-reflective floor that show both lights.
 """
 import math
 import os
@@ -151,6 +155,38 @@ def glass():
                     "128x128", "3", "-d", "uint8", "-o", os.path.join(HERE, "checker.png")], check=True)
 
 
+def mis_lights():
+    o = Obj()
+    o.use("Floor")
+    o.quad((-2, -1, 4), (2, -1, 4), (2, -1, -1.5), (-2, -1, -1.5))
+    o.use("BackWall")
+    o.quad((-2, -1, -1.5), (2, -1, -1.5), (2, 1.5, -1.5), (-2, 1.5, -1.5))
+    o.use("Room")  # closed, so only the two lights light it
+    o.quad((-2, 1.5, -1.5), (2, 1.5, -1.5), (2, 1.5, 4), (-2, 1.5, 4))
+    o.quad((-2, -1, 4), (-2, -1, -1.5), (-2, 1.5, -1.5), (-2, 1.5, 4))
+    o.quad((2, -1, -1.5), (2, -1, 4), (2, 1.5, 4), (2, 1.5, -1.5))
+    o.quad((2, -1, 4), (-2, -1, 4), (-2, 1.5, 4), (2, 1.5, 4))
+    o.use("Panel")  # facing +x, standing on the floor
+    o.quad((-1.1, -1, 0.7), (-1.1, -1, -1.3), (-1.1, 0.6, -1.3), (-1.1, 0.6, 0.7))
+    o.use("Mirror")
+    o.sphere((0.3, -0.55, -0.5), 0.45)
+    o.write(os.path.join(HERE, "mis_lights.obj"), "mis_lights.mtl",
+            "A large and a tiny light over diffuse and mirror surfaces: each strategy fails somewhere")
+    with open(os.path.join(HERE, "mis_lights.mtl"), "w") as f:
+        f.write("# Lab keywords. The room is closed: only the panel and the spark light it.\n\n")
+        f.write("newlight Spark\n\tlightposition 1.0 0.2 0.2\n\tlightcolor 1.0 0.9 0.7\n"
+                "\tlightradius 0.03\n\tlightintensity 1.5\n\n")
+        f.write("newcamera Front\n\tcameraposition 0.0 0.4 3.4\n\tcameratarget 0.0 -0.4 -0.3\n"
+                "\tcameraup 0.0 1.0 0.0\n\tcamerafov 45.0\n\n")
+        f.write("newmtl Floor\n\tdiffuseReflectance 0.6 0.6 0.6\n\treflat0deg 0.04\n\treflat90deg 1.0\n\n")
+        f.write("newmtl BackWall\n\tdiffuseReflectance 0.5 0.55 0.6\n\n")
+        f.write("newmtl Room\n\tdiffuseReflectance 0.4 0.4 0.4\n\n")
+        f.write("newmtl Panel\n\tdiffuseReflectance 0.0 0.0 0.0\n\temittance 1.2 1.1 0.9\n\n")
+        f.write("newmtl Mirror\n\tdiffuseReflectance 0.0 0.0 0.0\n\tspecularReflectance 0.9 0.9 0.9\n"
+                "\treflat0deg 1.0\n\treflat90deg 1.0\n")
+
+
 if __name__ == "__main__":
     cornell_box()
     glass()
+    mis_lights()

@@ -54,9 +54,11 @@ TEST(Analytic, ConvexLambertUnderConstantEnvironment) {
 struct FurnaceCase {
     LightSampling mode;
     float albedo;
+    SamplerKind sampler = SamplerKind::Sobol;
 };
 
 void PrintTo(const FurnaceCase& c, std::ostream* os) { *os << modeName(c.mode) << " albedo " << c.albedo; }
+void PrintTo(LightSampling m, std::ostream* os) { *os << modeName(m); }
 
 class Furnace : public ::testing::TestWithParam<FurnaceCase> {};
 
@@ -73,6 +75,7 @@ TEST_P(Furnace, ConvergesToGeometricSeries) {
         RenderSettings s;
         s.lightSampling = fc.mode;
         s.maxDepth = depth;
+        s.sampler = fc.sampler;
         Rendered r = render(scene, 24, 24, 32, s);
         float series = depth == 1000 ? 1.0f / (1.0f - fc.albedo) : 0.0f;
         if (depth < 1000)
@@ -86,9 +89,11 @@ TEST_P(Furnace, ConvergesToGeometricSeries) {
 INSTANTIATE_TEST_SUITE_P(Modes, Furnace,
                          ::testing::Values(FurnaceCase{LightSampling::Mis, 0.5f}, FurnaceCase{LightSampling::Mis, 0.8f},
                                            FurnaceCase{LightSampling::Nee, 0.5f},
-                                           FurnaceCase{LightSampling::Bsdf, 0.5f}),
+                                           FurnaceCase{LightSampling::Bsdf, 0.5f},
+                                           FurnaceCase{LightSampling::Mis, 0.8f, SamplerKind::Random}),
                          [](const ::testing::TestParamInfo<FurnaceCase>& info) {
-                             return modeName(info.param.mode) + "_albedo" + std::to_string(int(info.param.albedo * 10));
+                             return modeName(info.param.mode) + "_albedo" + std::to_string(int(info.param.albedo * 10)) +
+                                    (info.param.sampler == SamplerKind::Random ? "_random" : "");
                          });
 
 // A plane of reflectance Kd facing a point light of intensity I at height d: L = Kd I / (pi d^2)

@@ -16,7 +16,8 @@ constexpr int kRouletteDepth = 3; // scattering events before Russian roulette s
 
 } // namespace
 
-Spectrum PathTracer::trace(const Ray& cameraRay, IndependentSampler& sampler, RayCounts& counts) const {
+template <typename Sampler>
+Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& counts) const {
     const bool sampleLights = settings_.lightSampling != LightSampling::Bsdf && !lights_.empty();
     const bool weighHits = settings_.lightSampling == LightSampling::Mis;
 
@@ -65,9 +66,11 @@ Spectrum PathTracer::trace(const Ray& cameraRay, IndependentSampler& sampler, Ra
         LabBsdf bsdf = LabBsdf::make(m, kd, woLocal.z, settings_.hemisphere);
         if (bsdf.isBlack()) break;
 
-        // Next-event estimation: one emitter, one point on it, one shadow ray. The sample values
-        // are drawn even when unused so that every depth reads the same dimensions.
-        float uLight = sampler.get1D();
+        // Next-event estimation: one emitter, one point on it, one shadow ray. Dimensions a vertex
+        // does not use are skipped, not drawn, so each depth always reads the same dimensions.
+        float uLight = 0.0f;
+        if (lights_.size() > 1) uLight = sampler.get1D();
+        else sampler.skip(1);
         Vec2 uLightPoint = sampler.get2D();
         if (sampleLights && bsdf.hasNonDelta()) {
             float pmf;
@@ -116,11 +119,12 @@ Spectrum PathTracer::trace(const Ray& cameraRay, IndependentSampler& sampler, Ra
 
         // Russian roulette on the throughput without the refraction scaling, so paths inside
         // glass are not cut for carrying radiance that is only compressed.
-        float uRoulette = sampler.get1D();
         if (depth + 1 >= kRouletteDepth) {
             float q = std::min(1.0f, maxComponent(beta / etaScale));
-            if (uRoulette >= q) break;
+            if (sampler.get1D() >= q) break;
             beta /= q;
+        } else {
+            sampler.skip(1);
         }
         if (isBlack(beta)) break;
         ray = spawnRay(sp, wi);
@@ -133,5 +137,8 @@ Spectrum PathTracer::trace(const Ray& cameraRay, IndependentSampler& sampler, Ra
     }
     return L;
 }
+
+template Spectrum PathTracer::trace(const Ray&, IndependentSampler&, RayCounts&) const;
+template Spectrum PathTracer::trace(const Ray&, SobolSampler&, RayCounts&) const;
 
 } // namespace pt

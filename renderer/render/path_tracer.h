@@ -8,6 +8,7 @@
 #include "render/render_settings.h"
 #include "render/shading_triangles.h"
 #include "sampling/sampler.h"
+#include "sampling/sobol_sampler.h"
 #include "scene/scene.h"
 
 namespace pt {
@@ -18,8 +19,10 @@ public:
                const LightSet& lights, const RenderSettings& settings)
         : scene_(scene), triangles_(triangles), accel_(accel), lights_(lights), settings_(settings) {}
 
-    // Radiance arriving at the camera along `ray`.
-    Spectrum trace(const Ray& cameraRay, IndependentSampler& sampler, RayCounts& counts) const;
+    // Radiance arriving at the camera along `ray`. Sampler is IndependentSampler or SobolSampler;
+    // the choice is made once per render, not per ray.
+    template <typename Sampler>
+    Spectrum trace(const Ray& cameraRay, Sampler& sampler, RayCounts& counts) const;
 
 private:
     const Scene& scene_;

@@ -11,11 +11,15 @@ namespace pt {
 // convergence study and for users who want to see what each strategy alone does.
 enum class LightSampling { Mis, Nee, Bsdf };
 
+// Where sample values come from: independent random numbers, or Owen-scrambled Sobol points.
+enum class SamplerKind { Random, Sobol };
+
 struct RenderSettings {
     int maxDepth = 16;   // most scattering events on a path: 0 = emitters seen directly, 1 = direct light
     uint64_t seed = 0;
     LightSampling lightSampling = LightSampling::Mis;
     HemisphereSampling hemisphere = HemisphereSampling::Cosine;
+    SamplerKind sampler = SamplerKind::Sobol;
 };
 
 // Ray and sample counts, summed per tile and then over the image.

@@ -17,6 +17,12 @@ Renderer::Renderer(const Scene& scene, const Accel& accel, const Camera& camera,
       tilesX_((width + kTileSize - 1) / kTileSize), tilesY_((height + kTileSize - 1) / kTileSize) {}
 
 RayCounts Renderer::renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress) const {
+    if (settings_.sampler == SamplerKind::Sobol) return renderSamplesWith<SobolSampler>(film, first, last, progress);
+    return renderSamplesWith<IndependentSampler>(film, first, last, progress);
+}
+
+template <typename Sampler>
+RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last, RenderProgress* progress) const {
     tbb::combinable<RayCounts> counts;
     tbb::parallel_for(
         tbb::blocked_range<size_t>(0, tileCount(), 1),
@@ -25,7 +31,7 @@ RayCounts Renderer::renderSamples(Film& film, uint32_t first, uint32_t last, Ren
             _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
             _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
             RayCounts& local = counts.local();
-            IndependentSampler sampler;
+            Sampler sampler;
             for (size_t tile = range.begin(); tile != range.end(); ++tile) {
                 if (progress && progress->cancel.load(std::memory_order_relaxed)) return;
                 int x0 = int(tile % tilesX_) * kTileSize, y0 = int(tile / tilesX_) * kTileSize;

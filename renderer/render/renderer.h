@@ -35,6 +35,9 @@ public:
     size_t tileCount() const { return size_t(tilesX_) * tilesY_; }
 
 private:
+    template <typename Sampler>
+    RayCounts renderSamplesWith(Film& film, uint32_t first, uint32_t last, RenderProgress* progress) const;
+
     const Scene& scene_;
     RenderSettings settings_;
     std::vector<ShadingTriangle> triangles_;

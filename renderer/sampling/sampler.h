@@ -18,6 +18,8 @@ public:
         float a = rng_.nextFloat();
         return Vec2(a, rng_.nextFloat());
     }
+    // Independent streams have no dimensions to keep aligned: nothing to skip.
+    void skip(uint32_t) {}
 
 private:
     Pcg32 rng_;

@@ -1,0 +1,119 @@
+// Owen-scrambled Sobol points, shuffled per dimension pair (Burley 2020, "Practical Hash-based
+// Owen Scrambling"). Each get2D() call is a new dimension pair: the first two Sobol dimensions,
+// with the sample index shuffled and both coordinates scrambled by hashes of (pixel, seed, pair).
+// Every pixel gets its own randomization, so the estimate stays unbiased, and a power-of-two
+// prefix of samples is stratified in each pair: the cheapest variance reduction there is.
+#pragma once
+
+#include "core/math.h"
+#include "sampling/rng.h"
+
+#include <array>
+
+namespace pt {
+
+namespace sobol {
+
+inline uint32_t reverseBits(uint32_t x) {
+    x = __builtin_bswap32(x);
+    x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+    return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+}
+
+// A hash in which each bit depends only on lower bits: applied to bit-reversed values it is an
+// Owen scramble (Laine and Karras 2011, with Burley's constants).
+inline uint32_t laineKarrasPermutation(uint32_t x, uint32_t seed) {
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return x;
+}
+
+// Owen scramble of a 32-bit fraction given in bit-reversed form; returns it in normal order.
+inline uint32_t scrambleReversed(uint32_t reversed, uint32_t seed) {
+    return reverseBits(laineKarrasPermutation(reversed, seed));
+}
+
+inline uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) { return scrambleReversed(reverseBits(x), seed); }
+
+// The second Sobol dimension (direction numbers v_k = v_{k-1} ^ (v_{k-1} >> 1), v_0 = 2^31),
+// in bit-reversed order. The shuffled index has random high bits, so a loop over its bits would
+// run 32 unpredictable iterations; instead four byte tables hold the XOR of the directions of
+// every bit pattern of each index byte, built at compile time.
+constexpr uint32_t reverseBitsConstexpr(uint32_t x) {
+    uint32_t r = 0;
+    for (int i = 0; i < 32; ++i) r |= ((x >> i) & 1u) << (31 - i);
+    return r;
+}
+inline constexpr auto kDimension1ByteTables = [] {
+    std::array<std::array<uint32_t, 256>, 4> tables{};
+    uint32_t directions[32] = {};
+    uint32_t v = 1u << 31;
+    for (int k = 0; k < 32; ++k, v ^= v >> 1) directions[k] = reverseBitsConstexpr(v);
+    for (int byte = 0; byte < 4; ++byte)
+        for (uint32_t pattern = 0; pattern < 256; ++pattern) {
+            uint32_t x = 0;
+            for (int bit = 0; bit < 8; ++bit)
+                if (pattern & (1u << bit)) x ^= directions[8 * byte + bit];
+            tables[byte][pattern] = x;
+        }
+    return tables;
+}();
+inline uint32_t dimension1Reversed(uint32_t index) {
+    const auto& t = kDimension1ByteTables;
+    return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu] ^ t[2][(index >> 16) & 0xffu] ^ t[3][index >> 24];
+}
+// The first two Sobol dimensions in normal order (for tests and reference).
+inline uint32_t dimension0(uint32_t index) { return reverseBits(index); }
+inline uint32_t dimension1(uint32_t index) { return reverseBits(dimension1Reversed(index)); }
+
+inline float toUnitFloat(uint32_t x) { return float(x >> 8) * 0x1p-24f; }
+
+// A cheap 32-bit mix (the "lowbias32" finalizer) for per-dimension seeds.
+inline uint32_t mix32(uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+} // namespace sobol
+
+class SobolSampler {
+public:
+    void startPixelSample(uint32_t pixelIndex, uint32_t sampleIndex, uint64_t seed) {
+        pixelSeed_ = uint32_t(hashCombine(seed ^ 0x5bd1e995ULL, pixelIndex));
+        index_ = sampleIndex;
+        dimension_ = 0;
+    }
+    float get1D() {
+        uint32_t s = nextSeed();
+        uint32_t i = shuffledIndex(s);
+        // van der Corput is reverseBits(i): its reversed form is i itself.
+        return sobol::toUnitFloat(sobol::scrambleReversed(i, s ^ 0xa511e9b3u));
+    }
+    Vec2 get2D() {
+        uint32_t s = nextSeed();
+        uint32_t i = shuffledIndex(s);
+        uint32_t x = sobol::scrambleReversed(i, s ^ 0xa511e9b3u);
+        uint32_t y = sobol::scrambleReversed(sobol::dimension1Reversed(i), s ^ 0x63d83595u);
+        return Vec2(sobol::toUnitFloat(x), sobol::toUnitFloat(y));
+    }
+    // Advances past dimensions a path does not need here, so later dimensions keep their meaning.
+    void skip(uint32_t dimensions) { dimension_ += dimensions; }
+
+private:
+    uint32_t nextSeed() { return sobol::mix32(pixelSeed_ ^ sobol::mix32(dimension_++ + 0x9e3779b9u)); }
+    uint32_t shuffledIndex(uint32_t seed) const { return sobol::nestedUniformScramble(index_, seed); }
+
+    uint32_t pixelSeed_ = 0;
+    uint32_t index_ = 0;
+    uint32_t dimension_ = 0;
+};
+
+} // namespace pt
