@@ -39,7 +39,11 @@ options (default in brackets):
   --hemisphere M         Lambert sampling, cosine or uniform (a diagnostic) [cosine]
   --sampler S            sample values: sobol (Owen-scrambled Sobol points) or random
                          (independent) [sobol]
-  --aov LIST             extra EXR layers, comma-separated: variance (of the pixel mean) [none]
+  --aov LIST             extra EXR layers, comma-separated [none]:
+                           variance  variance of each pixel's mean (variance.R/G/B; pt diff uses it)
+                           albedo    first-hit reflectance, all lobes (albedo.R/G/B)
+                           normal    first-hit shading normal facing the camera (normal.X/Y/Z)
+                           depth     distance to the first hit, +inf where none (depth.Z)
   -q, --quiet            print neither warnings nor progress, only the summary line
   -h, --help             show this help
 
@@ -56,6 +60,7 @@ struct RenderArgs {
     int threads = 0;
     RenderSettings settings;
     bool aovVariance = false;
+    bool aovAlbedo = false, aovNormal = false, aovDepth = false;
     bool quiet = false;
 };
 
@@ -117,7 +122,10 @@ RenderArgs parseArgs(int argc, char** argv) {
             std::stringstream list(args.value(opt));
             for (std::string name; std::getline(list, name, ',');) {
                 if (name == "variance") r.aovVariance = true;
-                else throw UsageError("option --aov: unknown layer \"" + name + "\"; known: variance");
+                else if (name == "albedo") r.aovAlbedo = true;
+                else if (name == "normal") r.aovNormal = true;
+                else if (name == "depth") r.aovDepth = true;
+                else throw UsageError("option --aov: unknown layer \"" + name + "\"; known: variance, albedo, normal, depth");
             }
         } else if (opt == "q" || opt == "quiet") {
             r.quiet = true;
@@ -128,7 +136,8 @@ RenderArgs parseArgs(int argc, char** argv) {
     if (positional.empty()) throw UsageError("missing the SCENE argument");
     if (positional.size() > 1) throw UsageError("unexpected argument \"" + positional[1] + "\"; expected one SCENE");
     r.scene = positional[0];
-    if (r.aovVariance && formatFromPath(r.output) != ImageFormat::Exr)
+    bool anyAov = r.aovVariance || r.aovAlbedo || r.aovNormal || r.aovDepth;
+    if (anyAov && formatFromPath(r.output) != ImageFormat::Exr)
         throw UsageError("--aov needs an .exr output; \"" + r.output + "\" cannot hold extra layers");
     // Film sums (2 x 3 doubles), sample counts and the output copies: about 80 bytes a pixel.
     double bytes = double(r.width) * r.height * 80.0;
@@ -246,7 +255,8 @@ int renderCommand(int argc, char** argv) {
     RenderProgress progress;
     ProgressLine line(progress, !args.quiet && isatty(STDERR_FILENO));
     RenderResult result = renderImage(scene, *accel, scene.cameras[cameraIndex], args.width, args.height,
-                                      uint32_t(args.spp), threads, args.settings, &progress);
+                                      uint32_t(args.spp), threads, args.settings, &progress,
+                                      args.aovAlbedo || args.aovNormal || args.aovDepth);
     line.stop();
 
     Image image;
@@ -254,6 +264,9 @@ int renderCommand(int argc, char** argv) {
     image.height = args.height;
     image.rgb = result.film.mean();
     if (args.aovVariance) image.layers.push_back({"variance", {"R", "G", "B"}, result.film.varianceOfMean()});
+    if (args.aovAlbedo) image.layers.push_back({"albedo", {"R", "G", "B"}, result.film.albedo()});
+    if (args.aovNormal) image.layers.push_back({"normal", {"X", "Y", "Z"}, result.film.normal()});
+    if (args.aovDepth) image.layers.push_back({"depth", {"Z"}, result.film.depth()});
     auto meta = [&](const std::string& k, const std::string& v) { image.metadata.emplace_back(k, v); };
     meta("Software", "pt " PT_VERSION);
     meta("pt:version", PT_VERSION);

@@ -1,6 +1,7 @@
 #include "render/film.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace pt {
 
@@ -27,6 +28,39 @@ std::vector<float> Film::varianceOfMean() const {
             out[3 * i + c] = float(var / n);
         }
     }
+    return out;
+}
+
+void Film::enableFirstHitLayers() {
+    size_t n = sum_.size();
+    albedo_.assign(n, glm::dvec3(0.0));
+    normal_.assign(n, glm::dvec3(0.0));
+    depth_.assign(n, 0.0);
+    hits_.assign(n, 0);
+}
+
+std::vector<float> Film::albedo() const {
+    std::vector<float> out(albedo_.size() * 3, 0.0f);
+    for (size_t i = 0; i < albedo_.size(); ++i)
+        if (count_[i] > 0)
+            for (int c = 0; c < 3; ++c) out[3 * i + c] = float(albedo_[i][c] / count_[i]);
+    return out;
+}
+
+std::vector<float> Film::normal() const {
+    std::vector<float> out(normal_.size() * 3, 0.0f);
+    for (size_t i = 0; i < normal_.size(); ++i) {
+        double len = glm::length(normal_[i]);
+        if (len > 0)
+            for (int c = 0; c < 3; ++c) out[3 * i + c] = float(normal_[i][c] / len);
+    }
+    return out;
+}
+
+std::vector<float> Film::depth() const {
+    std::vector<float> out(depth_.size(), std::numeric_limits<float>::infinity());
+    for (size_t i = 0; i < depth_.size(); ++i)
+        if (hits_[i] > 0) out[i] = float(depth_[i] / hits_[i]);
     return out;
 }
 

@@ -28,6 +28,19 @@ public:
         sumSq_[pixel] += sumSq;
     }
 
+    // First-hit layers (albedo, shading normal, distance), allocated only when asked for.
+    void enableFirstHitLayers();
+    bool hasFirstHitLayers() const { return !albedo_.empty(); }
+    void addFirstHit(size_t pixel, const glm::dvec3& albedo, const glm::dvec3& normal, double depth, uint32_t hits) {
+        albedo_[pixel] += albedo;
+        normal_[pixel] += normal;
+        depth_[pixel] += depth;
+        hits_[pixel] += hits;
+    }
+    std::vector<float> albedo() const; // mean over samples, RGB
+    std::vector<float> normal() const; // mean over samples, renormalized; 0 where nothing was hit
+    std::vector<float> depth() const;  // mean distance over samples that hit; +inf where none did
+
     // Interleaved RGB float images of the mean and of its variance (sample variance / n).
     std::vector<float> mean() const;
     std::vector<float> varianceOfMean() const;
@@ -36,6 +49,9 @@ private:
     int width_, height_;
     std::vector<uint32_t> count_;
     std::vector<glm::dvec3> sum_, sumSq_;
+    std::vector<glm::dvec3> albedo_, normal_;
+    std::vector<double> depth_;
+    std::vector<uint32_t> hits_;
 };
 
 } // namespace pt

@@ -17,7 +17,7 @@ constexpr int kRouletteDepth = 3; // scattering events before Russian roulette s
 } // namespace
 
 template <typename Sampler>
-Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& counts) const {
+Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& counts, FirstHit* first) const {
     const bool sampleLights = settings_.lightSampling != LightSampling::Bsdf && !lights_.empty();
     const bool weighHits = settings_.lightSampling == LightSampling::Mis;
 
@@ -44,6 +44,11 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
             break;
         }
         if (hit.onSphere) { // sphere lights emit and reflect nothing
+            if (depth == 0 && first) {
+                const SphereLight& l = scene_.lights[hit.prim];
+                first->depth = hit.t;
+                first->normal = glm::normalize(ray.origin + hit.t * ray.dir - l.center);
+            }
             uint32_t e = lights_.emitterOfLight(hit.prim);
             L += beta * lights_.emitter(e).radiance * hitWeight(e, hit.t);
             break;
@@ -64,6 +69,11 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
         Spectrum kd = m.kd;
         if (m.kdTexture >= 0) kd *= lookupTexture(scene_.textures[m.kdTexture], hitUv(scene_, hit));
         LabBsdf bsdf = LabBsdf::make(m, kd, woLocal.z, settings_.hemisphere);
+        if (depth == 0 && first) {
+            first->albedo = bsdf.mirror + bsdf.refract + bsdf.diffuse;
+            first->normal = woLocal.z >= 0.0f ? n : -n;
+            first->depth = hit.t;
+        }
         if (bsdf.isBlack()) break;
 
         // Next-event estimation: one emitter, one point on it, one shadow ray. Dimensions a vertex
@@ -138,7 +148,7 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
     return L;
 }
 
-template Spectrum PathTracer::trace(const Ray&, IndependentSampler&, RayCounts&) const;
-template Spectrum PathTracer::trace(const Ray&, SobolSampler&, RayCounts&) const;
+template Spectrum PathTracer::trace(const Ray&, IndependentSampler&, RayCounts&, FirstHit*) const;
+template Spectrum PathTracer::trace(const Ray&, SobolSampler&, RayCounts&, FirstHit*) const;
 
 } // namespace pt

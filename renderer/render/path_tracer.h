@@ -13,6 +13,13 @@
 
 namespace pt {
 
+// What the camera ray hit first, for the albedo, normal and depth layers.
+struct FirstHit {
+    Spectrum albedo{0.0f}; // the BSDF's total reflectance towards the camera (all lobes)
+    Vec3 normal{0.0f};     // shading normal, turned to face the camera
+    float depth = kInf;    // distance along the camera ray
+};
+
 class PathTracer {
 public:
     PathTracer(const Scene& scene, const std::vector<ShadingTriangle>& triangles, const Accel& accel,
@@ -22,7 +29,7 @@ public:
     // Radiance arriving at the camera along `ray`. Sampler is IndependentSampler or SobolSampler;
     // the choice is made once per render, not per ray.
     template <typename Sampler>
-    Spectrum trace(const Ray& cameraRay, Sampler& sampler, RayCounts& counts) const;
+    Spectrum trace(const Ray& cameraRay, Sampler& sampler, RayCounts& counts, FirstHit* first = nullptr) const;
 
 private:
     const Scene& scene_;

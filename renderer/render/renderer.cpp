@@ -24,6 +24,7 @@ RayCounts Renderer::renderSamples(Film& film, uint32_t first, uint32_t last, Ren
 template <typename Sampler>
 RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last, RenderProgress* progress) const {
     tbb::combinable<RayCounts> counts;
+    const bool layers = film.hasFirstHitLayers();
     tbb::parallel_for(
         tbb::blocked_range<size_t>(0, tileCount(), 1),
         [&](const tbb::blocked_range<size_t>& range) {
@@ -39,16 +40,26 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
                 for (int y = y0; y < y1; ++y)
                     for (int x = x0; x < x1; ++x) {
                         uint32_t pixel = uint32_t(y) * uint32_t(width_) + uint32_t(x);
-                        glm::dvec3 sum(0.0), sumSq(0.0);
+                        glm::dvec3 sum(0.0), sumSq(0.0), albedo(0.0), normal(0.0);
+                        double depth = 0.0;
+                        uint32_t hits = 0;
                         for (uint32_t s = first; s < last; ++s) {
                             sampler.startPixelSample(pixel, s, settings_.seed);
                             Vec2 jitter = sampler.get2D(); // box filter: uniform inside the pixel
                             Ray ray = camera_.generate(float(x) + jitter.x, float(y) + jitter.y);
-                            glm::dvec3 L(tracer_.trace(ray, sampler, local));
+                            FirstHit hit;
+                            glm::dvec3 L(tracer_.trace(ray, sampler, local, layers ? &hit : nullptr));
                             sum += L;
                             sumSq += L * L;
+                            if (layers && hit.depth < kInf) {
+                                albedo += glm::dvec3(hit.albedo);
+                                normal += glm::dvec3(hit.normal);
+                                depth += hit.depth;
+                                ++hits;
+                            }
                         }
                         film.add(pixel, sum, sumSq, last - first);
+                        if (layers) film.addFirstHit(pixel, albedo, normal, depth, hits);
                     }
                 if (progress) progress->tilesDone.fetch_add(1, std::memory_order_relaxed);
             }
@@ -60,8 +71,10 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
 }
 
 RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
-                         uint32_t spp, int threads, const RenderSettings& settings, RenderProgress* progress) {
+                         uint32_t spp, int threads, const RenderSettings& settings, RenderProgress* progress,
+                         bool firstHitLayers) {
     RenderResult result{Film(width, height), {}};
+    if (firstHitLayers) result.film.enableFirstHitLayers();
     Renderer renderer(scene, accel, camera, width, height, settings);
     // Passes of a few samples each keep progress smooth and let a cancel request stop the render
     // within one pass; the film counts samples per pixel, so what was done stays usable.

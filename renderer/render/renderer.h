@@ -56,8 +56,9 @@ struct RenderResult {
 
 // Renders `spp` samples per pixel with `threads` threads (0: all hardware threads), in passes so
 // that progress can be reported and a cancel request is honoured between passes.
+// `firstHitLayers` also accumulates the albedo, normal and depth layers.
 RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
                          uint32_t spp, int threads, const RenderSettings& settings,
-                         RenderProgress* progress = nullptr);
+                         RenderProgress* progress = nullptr, bool firstHitLayers = false);
 
 } // namespace pt
