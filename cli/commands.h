@@ -5,5 +5,6 @@
 namespace pt::cli {
 
 int renderCommand(int argc, char** argv); // argv[0] is "render"
+int diffCommand(int argc, char** argv);   // argv[0] is "diff"
 
 } // namespace pt::cli

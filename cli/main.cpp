@@ -13,6 +13,8 @@ usage: pt <command> [options]
 commands:
   render SCENE [options]   render a scene (.obj with the lab's MTL) to .exr or .png
                            (pt render --help lists its options)
+  diff TEST REF [options]  compare two renders statistically; exit 0 same, 1 different
+                           (pt diff --help lists its options)
 
 options:
   -h, --help               show this help
@@ -37,6 +39,7 @@ int main(int argc, char** argv) {
     }
     try {
         if (!std::strcmp(cmd, "render")) return pt::cli::renderCommand(argc - 1, argv + 1);
+        if (!std::strcmp(cmd, "diff")) return pt::cli::diffCommand(argc - 1, argv + 1);
     } catch (const std::exception& e) { // last resort: never an uncaught exception trace
         std::fprintf(stderr, "pt: error: %s\n", e.what());
         return 1;

@@ -234,7 +234,7 @@ TEST(Invariance, ScaleAndTranslation) {
             options.blockSize = 8;
             CompareReport report = compareImages(toImage(moved), toImage(reference), options);
             EXPECT_TRUE(report.pass) << file << " scale " << c.scale << " translate " << c.translate.x << ": "
-                                     << report.failedBlocks << " blocks differ; worst z " << report.worst[0].z
+                                     << report.failedTests << " tests differ; worst z " << report.worst[0].z
                                      << " at " << report.worst[0].x0 << "," << report.worst[0].y0;
         }
     }

@@ -11,6 +11,18 @@ const ImageLayer* varianceLayer(const Image& image) {
     return nullptr;
 }
 
+double samplesPerPixel(const Image& image) {
+    for (const auto& [k, v] : image.metadata)
+        if (k == "pt:spp") {
+            try {
+                return std::stod(v);
+            } catch (...) {
+                return 0.0;
+            }
+        }
+    return 0.0;
+}
+
 double bonferroniZ(double alpha, double tests) {
     // Solve erfc(z / sqrt 2) = alpha / tests by bisection: P(|Z| > z) for a standard normal.
     double target = alpha / std::max(1.0, tests), lo = 0.0, hi = 40.0;
@@ -39,7 +51,59 @@ static std::string findNonFinite(const Image& image, const char* which) {
     return "";
 }
 
-CompareReport compareImages(const Image& test, const Image& reference, const CompareOptions& options) {
+namespace {
+
+// Summed-area table of one channel: any rectangle's sum in O(1).
+class AreaSums {
+public:
+    AreaSums(int w, int h) : w_(w), sums_(size_t(w + 1) * (h + 1), 0.0) {}
+    template <typename F>
+    void fill(int h, F value) {
+        for (int y = 0; y < h; ++y) {
+            double row = 0;
+            for (int x = 0; x < w_; ++x) {
+                row += value(x, y);
+                at(x + 1, y + 1) = at(x + 1, y) + row;
+            }
+        }
+    }
+    double sum(int x0, int y0, int x1, int y1) const { return at(x1, y1) - at(x0, y1) - at(x1, y0) + at(x0, y0); }
+
+private:
+    double& at(int x, int y) { return sums_[size_t(y) * (w_ + 1) + x]; }
+    double at(int x, int y) const { return sums_[size_t(y) * (w_ + 1) + x]; }
+    int w_;
+    std::vector<double> sums_;
+};
+
+struct Block {
+    int x0, y0, x1, y1;
+};
+
+// Every block of every scale and grid offset; blocks cut by the image edge keep at least half
+// their area.
+std::vector<Block> allBlocks(int w, int h, const CompareOptions& o) {
+    std::vector<Block> blocks;
+    for (int s = std::max(1, o.blockSize); s <= std::max(o.blockSize, o.maxBlockSize); s *= 2) {
+        if (s > std::max(w, h)) break;
+        int half = std::max(1, s / 2);
+        for (int oy : {0, half})
+            for (int ox : {0, half}) {
+                if (s == 1 && (ox || oy)) continue;
+                for (int y0 = oy - (oy ? s : 0); y0 < h; y0 += s)
+                    for (int x0 = ox - (ox ? s : 0); x0 < w; x0 += s) {
+                        Block b{std::max(0, x0), std::max(0, y0), std::min(w, x0 + s), std::min(h, y0 + s)};
+                        if (2 * (b.x1 - b.x0) * (b.y1 - b.y0) >= std::min(s * s, w * h)) blocks.push_back(b);
+                    }
+            }
+    }
+    return blocks;
+}
+
+} // namespace
+
+CompareReport compareImages(const Image& test, const Image& reference, const CompareOptions& options,
+                            double relativeMseThreshold) {
     CompareReport r;
     if (test.width != reference.width || test.height != reference.height) {
         r.inputError = "size mismatch: test is " + std::to_string(test.width) + "x" + std::to_string(test.height) +
@@ -69,56 +133,71 @@ CompareReport compareImages(const Image& test, const Image& reference, const Com
     const ImageLayer* vt = varianceLayer(test);
     const ImageLayer* vr = varianceLayer(reference);
     r.statistical = vt && vr;
-    const int bs = std::max(1, options.blockSize);
-    r.blocksX = (w + bs - 1) / bs;
-    r.blocksY = (h + bs - 1) / bs;
-    r.blocks = r.blocksX * r.blocksY;
-    r.blockZ.assign(size_t(r.blocks), 0.0f);
-    r.zThreshold = bonferroniZ(options.falsePositiveRate, 3.0 * r.blocks);
+    r.heat.assign(n, 0.0f);
+    if (!r.statistical) {
+        r.pass = r.relativeMse <= relativeMseThreshold;
+        return r;
+    }
 
     const double sppRatio = options.testSpp > 0 && options.referenceSpp > 0 ? options.referenceSpp / options.testSpp : 0.0;
+    const std::vector<Block> blocks = allBlocks(w, h, options);
+    r.tests = 3 * blocks.size();
+    r.zThreshold = bonferroniZ(options.falsePositiveRate, double(r.tests));
+
     std::vector<BlockDifference> all;
-    for (int by = 0; by < r.blocksY; ++by)
-        for (int bx = 0; bx < r.blocksX; ++bx) {
-            BlockDifference b;
-            b.x0 = bx * bs;
-            b.y0 = by * bs;
-            b.x1 = std::min(w, b.x0 + bs);
-            b.y1 = std::min(h, b.y0 + bs);
+    for (int c = 0; c < 3; ++c) {
+        auto px = [&](int x, int y) { return 3 * (size_t(y) * w + x) + c; };
+        AreaSums st(w, h), sr(w, h), vT(w, h), vR(w, h);
+        st.fill(h, [&](int x, int y) { return double(test.rgb[px(x, y)]); });
+        sr.fill(h, [&](int x, int y) { return double(reference.rgb[px(x, y)]); });
+        vT.fill(h, [&](int x, int y) { return std::max(double(vt->pixels[px(x, y)]), sppRatio * vr->pixels[px(x, y)]); });
+        vR.fill(h, [&](int x, int y) { return double(vr->pixels[px(x, y)]); });
+        for (const Block& b : blocks) {
             double count = double(b.x1 - b.x0) * (b.y1 - b.y0);
-            bool failed = false;
-            for (int c = 0; c < 3; ++c) {
-                double st = 0, sr = 0, varT = 0, varR = 0;
-                for (int y = b.y0; y < b.y1; ++y)
-                    for (int x = b.x0; x < b.x1; ++x) {
-                        size_t i = 3 * (size_t(y) * w + x) + c;
-                        st += test.rgb[i];
-                        sr += reference.rgb[i];
-                        if (r.statistical) {
-                            varT += std::max(double(vt->pixels[i]), sppRatio * vr->pixels[i]);
-                            varR += vr->pixels[i];
-                        }
-                    }
-                BlockDifference d = b;
-                d.channel = c;
-                d.test = st / count;
-                d.reference = sr / count;
-                // Variance of a block mean: the pixels are independent estimates.
-                double var = (varT + varR) / (count * count);
-                double floor = options.relativeFloor * std::abs(d.reference) + 1e-12;
-                d.z = (d.test - d.reference) / std::sqrt(var + floor * floor);
-                float& bz = r.blockZ[size_t(by) * r.blocksX + bx];
-                bz = std::max(bz, float(std::abs(d.z)));
-                failed |= std::abs(d.z) > r.zThreshold;
-                all.push_back(d);
-            }
-            r.failedBlocks += failed;
+            BlockDifference d{b.x0, b.y0, b.x1, b.y1, c};
+            d.test = st.sum(b.x0, b.y0, b.x1, b.y1) / count;
+            d.reference = sr.sum(b.x0, b.y0, b.x1, b.y1) / count;
+            double var = (vT.sum(b.x0, b.y0, b.x1, b.y1) + vR.sum(b.x0, b.y0, b.x1, b.y1)) / (count * count);
+            double floor = options.relativeFloor * std::abs(d.reference) + 1e-12;
+            d.z = (d.test - d.reference) / std::sqrt(var + floor * floor);
+            if (std::abs(d.z) > r.zThreshold) ++r.failedTests;
+            float score = float(std::abs(d.z) / r.zThreshold);
+            for (int y = b.y0; y < b.y1; ++y)
+                for (int x = b.x0; x < b.x1; ++x) r.heat[size_t(y) * w + x] = std::max(r.heat[size_t(y) * w + x], score);
+            all.push_back(d);
         }
+    }
     std::sort(all.begin(), all.end(), [](const BlockDifference& a, const BlockDifference& b) { return std::abs(a.z) > std::abs(b.z); });
-    all.resize(std::min(all.size(), options.worstCount));
-    r.worst = std::move(all);
-    r.pass = r.statistical ? r.failedBlocks == 0 : false;
+    // Report distinct places: skip blocks that overlap one already reported.
+    for (const BlockDifference& d : all) {
+        if (r.worst.size() >= options.worstCount) break;
+        bool overlaps = false;
+        for (const BlockDifference& k : r.worst)
+            overlaps |= d.x0 < k.x1 && k.x0 < d.x1 && d.y0 < k.y1 && k.y0 < d.y1;
+        if (!overlaps) r.worst.push_back(d);
+    }
+    r.pass = r.failedTests == 0;
     return r;
+}
+
+Image heatmapImage(const CompareReport& report, const Image& reference) {
+    Image out;
+    out.width = reference.width;
+    out.height = reference.height;
+    size_t n = size_t(out.width) * out.height;
+    out.rgb.resize(3 * n);
+    for (size_t i = 0; i < n; ++i) {
+        const float* p = &reference.rgb[3 * i];
+        float grey = 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+        grey = 0.25f * std::clamp(grey / (1.0f + grey), 0.0f, 1.0f); // tone-mapped and dimmed, for context
+        float s = i < report.heat.size() ? report.heat[i] : 0.0f;
+        // Below half the threshold: the context alone; at the threshold red; at twice it yellow.
+        float t = std::clamp((s - 0.5f) / 0.5f, 0.0f, 1.0f), u = std::clamp(s - 1.0f, 0.0f, 1.0f);
+        out.rgb[3 * i + 0] = grey + (1.0f - grey) * t;
+        out.rgb[3 * i + 1] = grey * (1.0f - t) + u;
+        out.rgb[3 * i + 2] = grey * (1.0f - t);
+    }
+    return out;
 }
 
 } // namespace pt

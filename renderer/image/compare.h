@@ -1,8 +1,11 @@
 // Statistical comparison of a Monte Carlo render against a reference. Two renders of the same
-// physics never match bit for bit, so the test is on block means: per block and channel,
+// physics never match bit for bit, so the test is on block means: for each block and channel,
 // z = (mean_test - mean_ref) / sqrt(var_test + var_ref), with the variances of the block means
-// taken from the images' variance layers. The z threshold is set by a Bonferroni correction so
-// that the chance of any false failure over the whole image is `falsePositiveRate`.
+// taken from the images' variance layers (pixels are independent estimates). Blocks come in
+// several sizes (the smallest, doubled up to 64 pixels) on grids shifted by half a block, so a
+// changed region of any size and position meets a block that fits it. The z threshold is set by
+// a Bonferroni correction over every test, so the chance of any false failure over the whole
+// image is `falsePositiveRate`.
 #pragma once
 
 #include "image/image_io.h"
@@ -13,18 +16,19 @@
 namespace pt {
 
 struct CompareOptions {
-    int blockSize = 16;
+    int blockSize = 8;    // smallest block side; larger scales double it up to maxBlockSize
+    int maxBlockSize = 64;
     double falsePositiveRate = 1e-3;
     // Floor on the standard deviation of a block difference, as a fraction of the reference block
     // mean: absorbs float differences between CPUs and compilers in noise-free regions (a
     // directly seen light, the sky) without hiding a real change of a percent or more.
     double relativeFloor = 1e-3;
     size_t worstCount = 10;
-    // Samples per pixel of each image, when known (0 if not). With both, the test image's
-    // variance is taken as at least the reference's scaled to the test's sample count: a
-    // low-sample variance estimate misses the rare, bright paths (caustics, fireflies) exactly
-    // when the low-sample mean falls short of the reference, which would otherwise make the test
-    // fail far more often than falsePositiveRate.
+    // Samples per pixel of each image, when known (0 if not; pt writes them as pt:spp). With
+    // both, the test image's variance is taken as at least the reference's scaled to the test's
+    // sample count: a low-sample variance estimate misses the rare, bright paths (caustics,
+    // fireflies) exactly when the low-sample mean falls short of the reference, which would
+    // otherwise make the test fail far more often than falsePositiveRate.
     double testSpp = 0, referenceSpp = 0;
 };
 
@@ -36,24 +40,33 @@ struct BlockDifference {
 };
 
 struct CompareReport {
-    std::string inputError; // non-empty: the images cannot be compared (size, NaN, ...)
+    std::string inputError;   // non-empty: the images cannot be compared (size, NaN, ...)
     bool statistical = false; // both images had variance layers
-    bool pass = false;
+    bool pass = false;        // statistical: no test beyond the threshold; else relativeMse <= threshold
     double relativeMse = 0;   // mean of (t - r)^2 / (r^2 + 0.01), over pixels and channels
     double meanAbsError = 0;
     double zThreshold = 0;
-    int blocks = 0, failedBlocks = 0;
-    std::vector<BlockDifference> worst; // largest |z| first
-    std::vector<float> blockZ;          // max |z| over channels, blocksX x blocksY, row-major
-    int blocksX = 0, blocksY = 0;
+    size_t tests = 0, failedTests = 0;
+    std::vector<BlockDifference> worst; // largest |z| first, overlapping blocks merged away
+    // Per pixel: the largest |z| / zThreshold of any block covering it (1 = at the threshold).
+    std::vector<float> heat;
 };
 
 // Finds the variance layer ("variance") of an image, or nullptr.
 const ImageLayer* varianceLayer(const Image& image);
 
-CompareReport compareImages(const Image& test, const Image& reference, const CompareOptions& options = {});
+// Samples per pixel from pt's metadata (pt:spp), or 0.
+double samplesPerPixel(const Image& image);
+
+// Without variance layers, `relativeMseThreshold` decides instead (not a statistical test).
+CompareReport compareImages(const Image& test, const Image& reference, const CompareOptions& options = {},
+                            double relativeMseThreshold = 1e-3);
 
 // Two-sided z threshold for a false-positive rate alpha spread over `tests` tests (Bonferroni).
 double bonferroniZ(double alpha, double tests);
+
+// The heat map as an image: the reference, darkened and grey, with blocks near or beyond the
+// threshold in red (at it) to yellow (twice it).
+Image heatmapImage(const CompareReport& report, const Image& reference);
 
 } // namespace pt

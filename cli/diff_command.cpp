@@ -1,0 +1,165 @@
+// pt diff: is a render statistically the same image as a reference?
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "image/compare.h"
+#include "image/image_io.h"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace pt::cli {
+namespace {
+
+const char* kDiffUsage = R"(usage: pt diff TEST.exr REFERENCE.exr [options]
+
+Compares two renders of the same scene. With variance layers in both (pt render --aov variance),
+block means at several scales are compared by a z-test whose threshold holds the chance of any
+false failure over the whole image at --alpha: identical physics with different noise passes, a
+change of a few percent in a region fails. Without variance layers, the relative MSE is compared
+with --threshold instead (not a statistical test; a warning says so).
+
+options (default in brackets):
+  --alpha A            false-failure rate for the whole image [0.001]
+  --block N            smallest block side in pixels; larger blocks double up to 64 [8]
+  --threshold T        without variance layers: fail when the relative MSE exceeds T [0.001]
+  --heatmap OUT.png    write where the images differ (red at the threshold, yellow at twice it)
+  --json OUT.json      write the report as JSON
+  -q, --quiet          print only the verdict line
+  -h, --help           show this help
+
+exit status: 0 the images agree, 1 they differ, 2 bad input (missing or unreadable file, size
+mismatch, NaN or Inf in an image, which is reported with its pixel) or bad usage
+)";
+
+const char* channelName(int c) { return c == 0 ? "R" : c == 1 ? "G" : "B"; }
+
+std::string jsonReport(const CompareReport& r, const std::string& test, const std::string& ref) {
+    auto esc = [](const std::string& s) {
+        std::string o;
+        for (char c : s) {
+            if (c == '"' || c == '\\') o += '\\';
+            o += c;
+        }
+        return o;
+    };
+    std::ostringstream j;
+    j << "{\n  \"test\": \"" << esc(test) << "\",\n  \"reference\": \"" << esc(ref) << "\",\n"
+      << "  \"pass\": " << (r.pass ? "true" : "false") << ",\n  \"statistical\": " << (r.statistical ? "true" : "false")
+      << ",\n  \"relative_mse\": " << r.relativeMse << ",\n  \"mean_abs_error\": " << r.meanAbsError
+      << ",\n  \"z_threshold\": " << r.zThreshold << ",\n  \"tests\": " << r.tests
+      << ",\n  \"failed_tests\": " << r.failedTests << ",\n  \"worst\": [";
+    for (size_t i = 0; i < r.worst.size(); ++i) {
+        const BlockDifference& d = r.worst[i];
+        j << (i ? ",\n" : "\n") << "    {\"x0\": " << d.x0 << ", \"y0\": " << d.y0 << ", \"x1\": " << d.x1
+          << ", \"y1\": " << d.y1 << ", \"channel\": \"" << channelName(d.channel) << "\", \"test\": " << d.test
+          << ", \"reference\": " << d.reference << ", \"z\": " << d.z << "}";
+    }
+    j << (r.worst.empty() ? "]\n}\n" : "\n  ]\n}\n");
+    return j.str();
+}
+
+} // namespace
+
+int diffCommand(int argc, char** argv) {
+    std::vector<std::string> files;
+    CompareOptions options;
+    double threshold = 1e-3;
+    std::string heatmap, json;
+    bool quiet = false;
+    try {
+        Args args(argc, argv, 1);
+        while (!args.done()) {
+            std::string opt;
+            if (!args.nextOption(opt)) {
+                files.push_back(args.positional());
+                continue;
+            }
+            if (opt == "h" || opt == "help") {
+                std::fputs(kDiffUsage, stdout);
+                return 0;
+            } else if (opt == "alpha") {
+                std::string v = args.value(opt);
+                char* end = nullptr;
+                options.falsePositiveRate = std::strtod(v.c_str(), &end);
+                if (*end || !(options.falsePositiveRate > 0 && options.falsePositiveRate < 1))
+                    throw UsageError("option --alpha: expected a rate in (0, 1), got \"" + v + "\"");
+            } else if (opt == "block") {
+                options.blockSize = int(args.integer(opt, 1, 4096));
+                options.maxBlockSize = std::max(options.maxBlockSize, options.blockSize);
+            } else if (opt == "threshold") {
+                std::string v = args.value(opt);
+                char* end = nullptr;
+                threshold = std::strtod(v.c_str(), &end);
+                if (*end || !(threshold >= 0)) throw UsageError("option --threshold: expected a number >= 0, got \"" + v + "\"");
+            } else if (opt == "heatmap") {
+                heatmap = args.value(opt);
+            } else if (opt == "json") {
+                json = args.value(opt);
+            } else if (opt == "q" || opt == "quiet") {
+                quiet = true;
+            } else {
+                throw UsageError("unknown option \"" + opt + "\" (pt diff --help lists the options)");
+            }
+        }
+        if (files.size() != 2) throw UsageError("expected TEST and REFERENCE images, got " + std::to_string(files.size()));
+        if (!heatmap.empty()) {
+            if (formatFromPath(heatmap) != ImageFormat::Png) throw UsageError("--heatmap: expected a .png path");
+            std::string problem = checkOutputPath(heatmap);
+            if (!problem.empty()) throw UsageError(problem);
+        }
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "pt diff: %s\n", e.what());
+        return 2;
+    }
+
+    Image test, reference;
+    for (auto [path, image] : {std::pair{&files[0], &test}, std::pair{&files[1], &reference}}) {
+        std::string error = readImage(*path, *image);
+        if (!error.empty()) {
+            std::fprintf(stderr, "pt diff: %s\n", error.c_str());
+            return 2;
+        }
+    }
+    options.testSpp = samplesPerPixel(test);
+    options.referenceSpp = samplesPerPixel(reference);
+    CompareReport r = compareImages(test, reference, options, threshold);
+    if (!r.inputError.empty()) {
+        std::fprintf(stderr, "pt diff: %s vs %s: %s\n", files[0].c_str(), files[1].c_str(), r.inputError.c_str());
+        return 2;
+    }
+
+    if (!quiet) {
+        std::printf("pt diff: %s vs %s (%dx%d)\n", files[0].c_str(), files[1].c_str(), test.width, test.height);
+        if (r.statistical) {
+            std::printf("  %zu of %zu block tests beyond |z| > %.2f (false-failure rate %g for the image)\n",
+                        r.failedTests, r.tests, r.zThreshold, options.falsePositiveRate);
+        } else {
+            std::printf("  warning: no variance layers (render with --aov variance); comparing relative MSE with "
+                        "--threshold %g instead of a statistical test\n", threshold);
+        }
+        std::printf("  relative MSE %.3g, mean absolute error %.3g\n", r.relativeMse, r.meanAbsError);
+        if (r.statistical && !r.worst.empty()) {
+            std::printf("  largest differences:\n");
+            for (const BlockDifference& d : r.worst) {
+                double rel = d.reference != 0 ? 100.0 * (d.test - d.reference) / std::abs(d.reference) : 0.0;
+                std::printf("    pixels [%d,%d) x [%d,%d) %s: test %.5g, reference %.5g (%+.2f%%), z %+.2f\n", d.x0, d.x1,
+                            d.y0, d.y1, channelName(d.channel), d.test, d.reference, rel, d.z);
+            }
+        }
+    }
+    std::printf("pt diff: %s\n", r.pass ? "the images agree" : "the images DIFFER");
+
+    if (!heatmap.empty()) {
+        std::string error = writeImage(heatmap, heatmapImage(r, reference));
+        if (!error.empty()) std::fprintf(stderr, "pt diff: %s\n", error.c_str());
+    }
+    if (!json.empty()) {
+        std::ofstream out(json);
+        out << jsonReport(r, files[0], files[1]);
+        if (!out) std::fprintf(stderr, "pt diff: cannot write %s\n", json.c_str());
+    }
+    return r.pass ? 0 : 1;
+}
+
+} // namespace pt::cli

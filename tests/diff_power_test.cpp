@@ -1,0 +1,138 @@
+// The golden comparison must be neither flaky nor blind. Renders of the cornell_box case with
+// other seeds must pass against the committed reference; the same render with a planted error
+// (a region 2 % brighter, a filled-in shadow, a shifted image, a NaN) must not.
+#include "accel/accel.h"
+#include "image/compare.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+namespace pt {
+namespace {
+
+constexpr int kSize = 128;
+constexpr uint32_t kTestSpp = 256; // as in golden/manifest.txt
+
+class DiffPower : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        Warnings w;
+        scene_ = new Scene(loadScene(PT_SOURCE_DIR "/scenes/cornell_box.obj", w));
+        accel_ = new Accel(*scene_, 0);
+        reference_ = new Image;
+        ASSERT_EQ(readImage(PT_SOURCE_DIR "/golden/cornell_box.exr", *reference_), "");
+    }
+    static void TearDownTestSuite() {
+        delete accel_;
+        delete scene_;
+        delete reference_;
+    }
+    static Image render(uint64_t seed) {
+        RenderSettings s;
+        s.seed = seed;
+        RenderResult r = renderImage(*scene_, *accel_, scene_->cameras[0], kSize, kSize, kTestSpp, 0, s);
+        Image img;
+        img.width = img.height = kSize;
+        img.rgb = r.film.mean();
+        img.layers.push_back({"variance", {"R", "G", "B"}, r.film.varianceOfMean()});
+        return img;
+    }
+    static CompareReport compare(const Image& test) {
+        CompareOptions o;
+        o.testSpp = kTestSpp;
+        o.referenceSpp = samplesPerPixel(*reference_);
+        return compareImages(test, *reference_, o);
+    }
+    static float& at(Image& img, int x, int y, int c) { return img.rgb[3 * (size_t(y) * kSize + x) + c]; }
+
+    static Scene* scene_;
+    static Accel* accel_;
+    static Image* reference_;
+};
+Scene* DiffPower::scene_ = nullptr;
+Accel* DiffPower::accel_ = nullptr;
+Image* DiffPower::reference_ = nullptr;
+
+TEST_F(DiffPower, OtherSeedsPass) {
+    ASSERT_GT(samplesPerPixel(*reference_), 0.0);
+    int failures = 0;
+    const int seeds = 12;
+    for (uint64_t seed = 1; seed <= uint64_t(seeds); ++seed) {
+        CompareReport r = compare(render(seed));
+        ASSERT_EQ(r.inputError, "");
+        if (!r.pass) ++failures;
+        EXPECT_TRUE(r.pass) << "seed " << seed << ": " << r.failedTests << " of " << r.tests << " tests, worst z "
+                            << r.worst[0].z;
+    }
+    std::printf("[ false failures ] %d of %d seeds\n", failures, seeds);
+}
+
+TEST_F(DiffPower, RegionTwoPercentBrighterFails) {
+    Image test = render(1);
+    ASSERT_TRUE(compare(test).pass);
+    for (int y = 40; y < 72; ++y)
+        for (int x = 52; x < 84; ++x)
+            for (int c = 0; c < 3; ++c) at(test, x, y, c) *= 1.02f;
+    CompareReport r = compare(test);
+    EXPECT_FALSE(r.pass) << "largest |z| " << r.worst[0].z << " of threshold " << r.zThreshold;
+    // The worst block overlaps the planted region.
+    EXPECT_TRUE(r.worst[0].x0 < 84 && r.worst[0].x1 > 52 && r.worst[0].y0 < 72 && r.worst[0].y1 > 40);
+}
+
+// A shadow filled in: the darkest 12x12 patch of floor (relative to its surroundings) brought up
+// to the brightness around it, as if an occluder had been lost.
+TEST_F(DiffPower, MissingShadowFails) {
+    Image test = render(1);
+    auto lum = [&](const Image& img, int x, int y) {
+        const float* p = &img.rgb[3 * (size_t(y) * kSize + x)];
+        return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+    };
+    auto mean = [&](const Image& img, int x0, int y0, int s) {
+        double m = 0;
+        for (int y = y0; y < y0 + s; ++y)
+            for (int x = x0; x < x0 + s; ++x) m += lum(img, x, y);
+        return m / (s * s);
+    };
+    int bx = 0, by = 0;
+    double best = 1e30;
+    for (int y = kSize / 2; y + 24 <= kSize; y += 4) // the floor is in the lower half
+        for (int x = 12; x + 24 <= kSize - 12; x += 4) {
+            double ratio = mean(*reference_, x + 6, y + 6, 12) / (mean(*reference_, x, y, 24) + 1e-6);
+            if (ratio < best) best = ratio, bx = x + 6, by = y + 6;
+        }
+    ASSERT_LT(best, 0.97) << "found no shadow to remove";
+    double scale = 1.0 / best;
+    for (int y = by; y < by + 12; ++y)
+        for (int x = bx; x < bx + 12; ++x)
+            for (int c = 0; c < 3; ++c) at(test, x, y, c) *= float(scale);
+    CompareReport r = compare(test);
+    EXPECT_FALSE(r.pass) << "shadow at " << bx << "," << by << " brightened by " << scale;
+}
+
+TEST_F(DiffPower, ShiftedImageFails) {
+    Image test = render(1);
+    Image shifted = test;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 1; x < kSize; ++x)
+            for (int c = 0; c < 3; ++c) at(shifted, x, y, c) = at(test, x - 1, y, c);
+    EXPECT_FALSE(compare(shifted).pass);
+}
+
+TEST_F(DiffPower, NanIsAnInputErrorWithItsLocation) {
+    Image test = render(1);
+    at(test, 17, 93, 1) = std::nanf("");
+    CompareReport r = compare(test);
+    EXPECT_FALSE(r.pass);
+    EXPECT_EQ(r.inputError, "test image has NaN at pixel (17, 93)");
+}
+
+TEST_F(DiffPower, SizeMismatchIsAnInputError) {
+    Image small;
+    small.width = small.height = 64;
+    small.rgb.assign(64 * 64 * 3, 0.5f);
+    EXPECT_NE(compare(small).inputError.find("size mismatch"), std::string::npos);
+}
+
+} // namespace
+} // namespace pt
