@@ -37,7 +37,6 @@ inline uint32_t scrambleReversed(uint32_t reversed, uint32_t seed) {
     return reverseBits(laineKarrasPermutation(reversed, seed));
 }
 
-inline uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) { return scrambleReversed(reverseBits(x), seed); }
 
 // The second Sobol dimension (direction numbers v_k = v_{k-1} ^ (v_{k-1} >> 1), v_0 = 2^31),
 // in bit-reversed order. The shuffled index has random high bits, so a loop over its bits would
@@ -88,7 +87,7 @@ class SobolSampler {
 public:
     void startPixelSample(uint32_t pixelIndex, uint32_t sampleIndex, uint64_t seed) {
         pixelSeed_ = uint32_t(hashCombine(seed ^ 0x5bd1e995ULL, pixelIndex));
-        index_ = sampleIndex;
+        reversedIndex_ = sobol::reverseBits(sampleIndex); // the shuffle works on the reversed index
         dimension_ = 0;
     }
     float get1D() {
@@ -108,11 +107,14 @@ public:
     void skip(uint32_t dimensions) { dimension_ += dimensions; }
 
 private:
-    uint32_t nextSeed() { return sobol::mix32(pixelSeed_ ^ sobol::mix32(dimension_++ + 0x9e3779b9u)); }
-    uint32_t shuffledIndex(uint32_t seed) const { return sobol::nestedUniformScramble(index_, seed); }
+    // One hash per dimension pair: the Laine-Karras permutations that use it mix it further.
+    uint32_t nextSeed() { return sobol::mix32(pixelSeed_ + 0x9e3779b9u * ++dimension_); }
+    uint32_t shuffledIndex(uint32_t seed) const {
+        return sobol::reverseBits(sobol::laineKarrasPermutation(reversedIndex_, seed));
+    }
 
     uint32_t pixelSeed_ = 0;
-    uint32_t index_ = 0;
+    uint32_t reversedIndex_ = 0;
     uint32_t dimension_ = 0;
 };
 
