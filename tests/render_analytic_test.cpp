@@ -208,15 +208,6 @@ Scene transformed(Scene scene, float scale, Vec3 translate) {
     return scene;
 }
 
-Image toImage(const Rendered& r) {
-    Image img;
-    img.width = r.width;
-    img.height = r.height;
-    img.rgb = r.mean;
-    img.layers.push_back({"variance", {"R", "G", "B"}, r.variance});
-    return img;
-}
-
 // Scaled by 1e-3 or 1e4, or moved 1e4 away from the origin, a scene renders the same image: no
 // acne, no leaks, no lost contact shadows from a scale-dependent ray offset.
 TEST(Invariance, ScaleAndTranslation) {

@@ -27,7 +27,8 @@ void addQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material) {
     addTriangle(scene, a, c, d, material);
 }
 
-void addIcosphere(Scene& scene, Vec3 center, float radius, int subdivisions, uint32_t material, bool inward) {
+void addIcosphere(Scene& scene, Vec3 center, float radius, int subdivisions, uint32_t material, bool inward,
+                  bool smooth) {
     const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
     std::vector<Vec3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
                            {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
@@ -51,11 +52,40 @@ void addIcosphere(Scene& scene, Vec3 center, float radius, int subdivisions, uin
         }
         f = std::move(g);
     }
+    uint32_t normalBase = uint32_t(scene.normals.size());
+    if (smooth) {
+        for (const Vec3& p : v) scene.normals.push_back(inward ? -p : p);
+    }
     for (const glm::uvec3& tri : f) {
         Vec3 a = center + radius * v[tri.x], b = center + radius * v[tri.y], c = center + radius * v[tri.z];
+        glm::uvec3 corners = inward ? glm::uvec3(tri.x, tri.z, tri.y) : tri;
         if (inward) addTriangle(scene, a, c, b, material);
         else addTriangle(scene, a, b, c, material);
+        if (smooth) {
+            scene.triNormals.resize(scene.triangleCount(), glm::ivec3(-1)); // the first smooth face
+            scene.triNormals.back() = glm::ivec3(glm::uvec3(normalBase) + corners);
+        }
     }
+}
+
+void addBox(Scene& scene, Vec3 lo, Vec3 hi, uint32_t m) {
+    Vec3 p[8];
+    for (int i = 0; i < 8; ++i) p[i] = Vec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+    addQuad(scene, p[0], p[2], p[3], p[1], m); // z = lo, facing -z
+    addQuad(scene, p[4], p[5], p[7], p[6], m); // z = hi, facing +z
+    addQuad(scene, p[0], p[4], p[6], p[2], m); // x = lo
+    addQuad(scene, p[1], p[3], p[7], p[5], m); // x = hi
+    addQuad(scene, p[0], p[1], p[5], p[4], m); // y = lo
+    addQuad(scene, p[2], p[6], p[7], p[3], m); // y = hi
+}
+
+Image toImage(const Rendered& r) {
+    Image img;
+    img.width = r.width;
+    img.height = r.height;
+    img.rgb = r.mean;
+    img.layers.push_back({"variance", {"R", "G", "B"}, r.variance});
+    return img;
 }
 
 Scene emptyScene(const Camera& camera) {

@@ -1,6 +1,7 @@
 // Scenes built in code for tests, and helpers to render them and measure image regions.
 #pragma once
 
+#include "image/image_io.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
@@ -12,9 +13,12 @@ uint32_t addMaterial(Scene& scene, const Material& m);
 void addTriangle(Scene& scene, Vec3 a, Vec3 b, Vec3 c, uint32_t material);
 // Corners counter-clockwise seen from the side the normal faces.
 void addQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material);
-// Subdivided icosahedron with flat faces (no vertex normals), normals facing out or in.
+// Subdivided icosahedron with flat faces (no vertex normals), normals facing out or in; with
+// `smooth`, vertex normals along the radius (facing out, or in with `inward`).
 void addIcosphere(Scene& scene, Vec3 center, float radius, int subdivisions, uint32_t material,
-                  bool inward = false);
+                  bool inward = false, bool smooth = false);
+// An axis-aligned box of six quads, normals facing out.
+void addBox(Scene& scene, Vec3 lo, Vec3 hi, uint32_t material);
 // Scene with one camera and a black environment.
 Scene emptyScene(const Camera& camera);
 
@@ -39,6 +43,9 @@ struct RegionStats {
     Spectrum stdError{0.0f};
 };
 RegionStats regionStats(const Rendered& r, int x0, int y0, int x1, int y1);
+
+// The render as an image with its variance layer, for compareImages (image/compare.h).
+Image toImage(const Rendered& r);
 
 // Asserts |measured - expected| <= sigmas * stdError + relTol * expected in every channel.
 void expectNear(const RegionStats& s, const Spectrum& expected, float sigmas, float relTol, const char* what);

@@ -4,6 +4,11 @@
 #include "light/sphere_light_sampling.h"
 #include "sampling/warp.h"
 
+#include <algorithm>
+#include <array>
+#include <map>
+#include <tuple>
+
 namespace pt {
 
 LightSet::LightSet(const Scene& scene) : scene_(scene) {
@@ -23,6 +28,9 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
     for (const Material& m : scene.materials) anyEmissive |= m.isEmissive();
     if (anyEmissive) {
         triangleEmitter_.assign(scene.triangleCount(), ~0u);
+        // A triangle given twice is one surface: sampled as two emitters it would send its light
+        // twice (a shadow ray to either copy passes the other), so copies share one emitter.
+        std::map<std::array<float, 9>, uint32_t> emitterOfCorners;
         for (size_t t = 0; t < scene.triangleCount(); ++t) {
             const Material& m = scene.materials[scene.triMaterial[t]];
             if (!m.isEmissive()) continue;
@@ -30,7 +38,15 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
             const Vec3 &a = scene.positions[tri[0]], &b = scene.positions[tri[1]], &c = scene.positions[tri[2]];
             float area = 0.5f * glm::length(glm::cross(b - a, c - a));
             if (!(area > 0.0f)) continue; // degenerate triangles emit nothing and are never hit
-            triangleEmitter_[t] = uint32_t(emitters_.size());
+            std::array<Vec3, 3> corners = {a, b, c};
+            std::sort(corners.begin(), corners.end(), [](const Vec3& p, const Vec3& q) {
+                return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+            });
+            std::array<float, 9> key;
+            for (int k = 0; k < 9; ++k) key[k] = corners[k / 3][k % 3];
+            auto [it, isNew] = emitterOfCorners.try_emplace(key, uint32_t(emitters_.size()));
+            triangleEmitter_[t] = it->second;
+            if (!isNew) continue;
             Emitter e{Emitter::Kind::Triangle, uint32_t(t)};
             e.radiance = m.emission;
             emitters_.push_back(e);

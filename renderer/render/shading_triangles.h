@@ -36,7 +36,9 @@ inline Vec3 decodeOctahedral(uint32_t code) {
     float t = std::max(-v.z, 0.0f);
     v.x += v.x >= 0.0f ? -t : t;
     v.y += v.y >= 0.0f ? -t : t;
-    return v; // not unit length: callers normalize after interpolating
+    // Unit length again: interpolating the octahedron's points (lengths 1/sqrt(3) to 1) would
+    // weight corners by their direction, not by the barycentrics.
+    return glm::normalize(v);
 }
 
 } // namespace pt
