@@ -53,10 +53,13 @@ TEST(TextParser, ColorTakesOneOrThreeValues) {
 TEST(TextParser, RejectsNulBytes) {
     std::string file = "bin.obj";
     std::string text = std::string("v 1 2 3\nv \0\x01\x02", 13);
-    LineReader lines(text, file);
-    std::string_view l;
-    EXPECT_TRUE(lines.next(l));
-    EXPECT_THROW(lines.next(l), LoadError);
+    // Rejected before any line is read, with the line of the first NUL.
+    try {
+        LineReader lines(text, file);
+        FAIL() << "no error";
+    } catch (const LoadError& e) {
+        EXPECT_STREQ(e.what(), "bin.obj:2: contains a NUL byte; expected a text file, not binary data");
+    }
 }
 
 TEST(TextParser, CaseInsensitiveKeywords) {

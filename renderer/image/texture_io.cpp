@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <filesystem>
 
 namespace pt {
 
@@ -15,6 +16,11 @@ float linearToSrgb(float c) {
 }
 
 bool readTexture(const std::string& path, Texture& texture, std::string& error) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) { // a pipe or device could block forever
+        error = "texture \"" + path + "\" " + (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found");
+        return false;
+    }
     auto in = OIIO::ImageInput::open(path);
     if (!in) {
         error = "cannot read texture \"" + path + "\": " + OIIO::geterror();

@@ -18,7 +18,12 @@ public:
 
 class Warnings {
 public:
-    void add(std::string message) { messages_.push_back(std::move(message)); }
+    static constexpr size_t kMaxMessages = 50; // a garbage file must not print a million lines
+
+    void add(std::string message) {
+        if (messages_.size() < kMaxMessages) messages_.push_back(std::move(message));
+        else if (messages_.size() == kMaxMessages) messages_.push_back("further warnings not shown");
+    }
     // Adds the message only the first time `key` is seen, so a keyword used on every line of a
     // file is reported once.
     void once(const std::string& key, std::string message) {

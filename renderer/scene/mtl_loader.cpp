@@ -218,7 +218,7 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
     // Lights.
     else if (is("lightposition")) {
         requireBlock(Block::Light, keyword, t);
-        light.light.center = t.vec3(keyword);
+        light.light.center = t.point(keyword);
     } else if (is("lightcolor")) {
         requireBlock(Block::Light, keyword, t);
         light.color = nonNegativeColor(t, keyword);
@@ -232,10 +232,10 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
     // Cameras.
     else if (is("cameraposition")) {
         requireBlock(Block::Camera, keyword, t);
-        camera.position = t.vec3(keyword);
+        camera.position = t.point(keyword);
     } else if (is("cameratarget")) {
         requireBlock(Block::Camera, keyword, t);
-        camera.target = t.vec3(keyword);
+        camera.target = t.point(keyword);
     } else if (is("cameraup")) {
         requireBlock(Block::Camera, keyword, t);
         camera.up = t.vec3(keyword);
@@ -244,7 +244,7 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
         camera.fovY = t.number(keyword);
     } else {
         std::string k = toLower(keyword);
-        warnings.once("mtl:" + k, path + ":" + std::to_string(lines.lineNumber()) + ": unknown keyword \"" +
+        warnings.once("mtl:" + k, t.location() + "unknown keyword \"" +
                                       std::string(keyword) + "\" ignored (reported once)");
         return;
     }

@@ -80,7 +80,8 @@ void ObjParser::useMaterial(std::string_view name, const Tokens& t) {
         currentMaterial = it->second;
     } else if (mtlMissing) {
         warnings.once("usemtl:" + std::string(name),
-                      "material \"" + std::string(name) + "\" not found (its mtllib is missing); using the default material");
+                      t.location() + "usemtl: material \"" + std::string(name) +
+                          "\" not found (its mtllib is missing); using the default material");
         currentMaterial = fallbackMaterial();
     } else {
         t.fail("usemtl: no material named \"" + std::string(name) + "\" in the mtllib files");
@@ -125,7 +126,7 @@ void ObjParser::parseFace(Tokens& t, const LineReader& lines) {
 
 void ObjParser::parseLine(std::string_view keyword, Tokens& t, const LineReader& lines) {
     if (keyword == "v") {
-        scene.positions.push_back(t.vec3("v"));
+        scene.positions.push_back(t.point("v"));
         return; // an optional w or vertex colour may follow; neither is used
     }
     if (keyword == "vn") {
@@ -160,7 +161,7 @@ void ObjParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
             } catch (const LoadError& e) {
                 // A material library that does not exist is recoverable; a malformed one is not.
                 if (std::filesystem::exists(file)) throw;
-                warnings.add(path + ":" + std::to_string(lines.lineNumber()) + ": mtllib \"" + name +
+                warnings.add(t.location() + "mtllib \"" + name +
                              "\" not found; faces using its materials get the default material");
                 mtlMissing = true;
             }
@@ -168,8 +169,7 @@ void ObjParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
         return;
     }
     if (keyword == "o" || keyword == "g" || keyword == "s") return; // grouping and smoothing: not needed
-    warnings.once("obj:" + std::string(keyword), path + ":" + std::to_string(lines.lineNumber()) +
-                                                     ": unsupported keyword \"" + std::string(keyword.substr(0, 40)) +
+    warnings.once("obj:" + std::string(keyword), t.location() + "unsupported keyword \"" + std::string(keyword.substr(0, 40)) +
                                                      "\" ignored (reported once)");
 }
 
@@ -191,6 +191,7 @@ Scene parseObj(std::string_view text, const std::string& path, Warnings& warning
 
 Scene loadObj(const std::string& path, Warnings& warnings) {
     std::string text = readTextFile(path);
+    if (text.empty()) throw LoadError(path + ": the file is empty; expected a Wavefront OBJ scene");
     return parseObj(text, path, warnings);
 }
 

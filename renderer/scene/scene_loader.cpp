@@ -50,6 +50,14 @@ Scene loadScene(const std::string& path, Warnings& warnings) {
         warnings.add(path + ": no camera defined; framing the whole scene from +z (add a newcamera "
                             "block to the MTL to choose the view)");
     }
+    size_t degenerate = 0;
+    for (const glm::uvec3& tri : scene.triPositions) {
+        const Vec3 &a = scene.positions[tri[0]], &b = scene.positions[tri[1]], &c = scene.positions[tri[2]];
+        degenerate += !(glm::length(glm::cross(b - a, c - a)) > 0.0f);
+    }
+    if (degenerate > 0)
+        warnings.add(path + ": " + std::to_string(degenerate) + " of " + std::to_string(scene.triangleCount()) +
+                     " triangles have zero area; rays never hit them");
     if (scene.triangleCount() == 0 && scene.lights.empty())
         warnings.add(path + ": the scene has no geometry and no lights; only the environment will show");
     return scene;

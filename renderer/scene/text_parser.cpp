@@ -1,5 +1,6 @@
 #include "scene/text_parser.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
@@ -14,6 +15,7 @@ std::string readTextFile(const std::string& path) {
     if (stat(path.c_str(), &st) != 0)
         throw LoadError(path + ": cannot open: " + std::strerror(errno));
     if (S_ISDIR(st.st_mode)) throw LoadError(path + ": is a directory, expected a scene file");
+    if (!S_ISREG(st.st_mode)) throw LoadError(path + ": is not a regular file (a device or pipe?)");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw LoadError(path + ": cannot open: " + std::strerror(errno));
     std::string text;
@@ -21,6 +23,14 @@ std::string readTextFile(const std::string& path) {
     in.read(text.data(), std::streamsize(text.size()));
     if (size_t(in.gcount()) != text.size()) throw LoadError(path + ": read failed");
     return text;
+}
+
+LineReader::LineReader(std::string_view text, const std::string& file) : text_(text), file_(file) {
+    size_t nul = text.find('\0');
+    if (nul != std::string_view::npos) {
+        size_t line = 1 + size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(nul), '\n'));
+        throw LoadError(file_, line, "contains a NUL byte; expected a text file, not binary data");
+    }
 }
 
 bool LineReader::next(std::string_view& line) {
@@ -31,8 +41,6 @@ bool LineReader::next(std::string_view& line) {
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     pos_ = end + 1;
     ++line_;
-    if (line.find('\0') != std::string_view::npos)
-        throw LoadError(file_, line_, "contains a NUL byte; expected a text file");
     return true;
 }
 
@@ -70,6 +78,8 @@ void Tokens::fail(const std::string& message) const {
     throw LoadError(where_.file(), where_.lineNumber(), message);
 }
 
+std::string Tokens::location() const { return where_.file() + ":" + std::to_string(where_.lineNumber()) + ": "; }
+
 static std::string quoted(std::string_view s) {
     constexpr size_t kMax = 40; // a 10 MB token must not become a 10 MB message
     std::string q = "\"" + std::string(s.substr(0, kMax));
@@ -106,6 +116,13 @@ int Tokens::integer(std::string_view what) {
 Vec3 Tokens::vec3(std::string_view what) {
     float x = number(what), y = number(what), z = number(what);
     return Vec3(x, y, z);
+}
+
+Vec3 Tokens::point(std::string_view what) {
+    Vec3 p = vec3(what);
+    if (maxComponent(glm::abs(p)) > kMaxCoordinate)
+        fail(std::string(what) + ": coordinate beyond +-1e18; expected a scene within that range");
+    return p;
 }
 
 Spectrum Tokens::color(std::string_view what) {

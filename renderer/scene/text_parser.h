@@ -10,13 +10,16 @@
 
 namespace pt {
 
-// Reads a whole file into memory, or throws a LoadError saying why it could not.
+// Reads a whole regular file into memory, or throws a LoadError saying why it could not
+// (missing, a folder, a device or pipe that could block or never end).
 std::string readTextFile(const std::string& path);
 
 // Splits a buffer into lines; accepts "\n" and "\r\n" endings and a missing final newline.
 class LineReader {
 public:
-    LineReader(std::string_view text, const std::string& file) : text_(text), file_(file) {}
+    // Throws a LoadError naming the line of the first NUL byte: binary files are rejected before
+    // any line is parsed, not after a screen of warnings about garbage keywords.
+    LineReader(std::string_view text, const std::string& file);
 
     bool next(std::string_view& line);
     size_t lineNumber() const { return line_; }
@@ -40,11 +43,16 @@ public:
     float number(std::string_view what);
     int integer(std::string_view what);
     Vec3 vec3(std::string_view what);
+    // A point in the scene: three numbers within +-kMaxCoordinate. Embree silently drops triangles
+    // with larger coordinates, so they are refused here, where the line is known.
+    static constexpr float kMaxCoordinate = 1e18f;
+    Vec3 point(std::string_view what);
     // One value replicated to three channels, or three values (the MTL colour forms).
     Spectrum color(std::string_view what);
     void expectEnd(std::string_view keyword);
 
     [[noreturn]] void fail(const std::string& message) const;
+    std::string location() const; // "file:line: ", to start a warning
 
 private:
     void skipSpace();
