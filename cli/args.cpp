@@ -1,6 +1,7 @@
 #include "cli/args.h"
 
 #include <charconv>
+#include <cmath>
 
 namespace pt::cli {
 
@@ -40,6 +41,18 @@ long long Args::integer(const std::string& option, long long lo, long long hi) {
     auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
     if (ec != std::errc() || ptr != v.data() + v.size() || v.empty())
         throw UsageError("option --" + option + ": expected an integer, got \"" + v + "\"");
+    if (x < lo || x > hi)
+        throw UsageError("option --" + option + ": " + v + " is out of range [" + std::to_string(lo) + ", " +
+                         std::to_string(hi) + "]");
+    return x;
+}
+
+double Args::number(const std::string& option, double lo, double hi) {
+    std::string v = value(option);
+    double x = 0;
+    auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+    if (ec != std::errc() || ptr != v.data() + v.size() || v.empty() || !std::isfinite(x))
+        throw UsageError("option --" + option + ": expected a number, got \"" + v + "\"");
     if (x < lo || x > hi)
         throw UsageError("option --" + option + ": " + v + " is out of range [" + std::to_string(lo) + ", " +
                          std::to_string(hi) + "]");

@@ -24,6 +24,7 @@ public:
     std::string positional();
     std::string value(const std::string& option);
     long long integer(const std::string& option, long long lo, long long hi);
+    double number(const std::string& option, double lo, double hi); // finite, in [lo, hi]
 
 private:
     std::vector<std::string> args_;

@@ -79,19 +79,12 @@ int diffCommand(int argc, char** argv) {
                 std::fputs(kDiffUsage, stdout);
                 return 0;
             } else if (opt == "alpha") {
-                std::string v = args.value(opt);
-                char* end = nullptr;
-                options.falsePositiveRate = std::strtod(v.c_str(), &end);
-                if (*end || !(options.falsePositiveRate > 0 && options.falsePositiveRate < 1))
-                    throw UsageError("option --alpha: expected a rate in (0, 1), got \"" + v + "\"");
+                options.falsePositiveRate = args.number(opt, 1e-12, 0.5);
             } else if (opt == "block") {
                 options.blockSize = int(args.integer(opt, 1, 4096));
                 options.maxBlockSize = std::max(options.maxBlockSize, options.blockSize);
             } else if (opt == "threshold") {
-                std::string v = args.value(opt);
-                char* end = nullptr;
-                threshold = std::strtod(v.c_str(), &end);
-                if (*end || !(threshold >= 0)) throw UsageError("option --threshold: expected a number >= 0, got \"" + v + "\"");
+                threshold = args.number(opt, 0.0, 1e30);
             } else if (opt == "heatmap") {
                 heatmap = args.value(opt);
             } else if (opt == "json") {

@@ -7,9 +7,11 @@
 #include "scene/scene_loader.h"
 
 #include <tbb/task_arena.h>
+#include <csignal>
 #include <unistd.h>
 
 #include <chrono>
+#include <filesystem>
 #include <condition_variable>
 #include <cstdio>
 #include <mutex>
@@ -44,11 +46,17 @@ options (default in brackets):
                            albedo    first-hit reflectance, all lobes (albedo.R/G/B)
                            normal    first-hit shading normal facing the camera (normal.X/Y/Z)
                            depth     distance to the first hit, +inf where none (depth.Z)
+  --clamp X              scale down any sample whose largest channel exceeds X: fewer
+                         fireflies, but biased (light is lost); 0 is off [0]
   -q, --quiet            print neither warnings nor progress, only the summary line
   -h, --help             show this help
 
 Progress goes to stderr when it is a terminal; one summary line always ends the render.
-exit status: 0 success, 1 bad input (scene, texture, failed write), 2 bad usage
+Ctrl-C (SIGINT) or SIGTERM stops the render within a moment: the samples finished so far go to
+OUT with ".partial" before the extension (out.partial.exr), and OUT itself is left untouched.
+A second signal quits at once.
+exit status: 0 success, 1 bad input (scene, texture, failed write), 2 bad usage,
+             130 or 143 interrupted by SIGINT or SIGTERM
 )";
 
 struct RenderArgs {
@@ -127,6 +135,8 @@ RenderArgs parseArgs(int argc, char** argv) {
                 else if (name == "depth") r.aovDepth = true;
                 else throw UsageError("option --aov: unknown layer \"" + name + "\"; known: variance, albedo, normal, depth");
             }
+        } else if (opt == "clamp") {
+            r.settings.clamp = float(args.number(opt, 0.0, 3e38));
         } else if (opt == "q" || opt == "quiet") {
             r.quiet = true;
         } else {
@@ -183,8 +193,8 @@ private:
         auto start = std::chrono::steady_clock::now();
         std::unique_lock<std::mutex> lock(mutex_);
         while (!wake_.wait_for(lock, std::chrono::milliseconds(250), [this] { return stop_; })) {
-            double total = double(std::max<uint64_t>(1, progress_.tilesTotal));
-            double f = double(progress_.tilesDone.load()) / total;
+            double total = double(std::max<uint64_t>(1, progress_.total));
+            double f = double(progress_.done.load()) / total;
             double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             if (f > 0.0)
                 std::fprintf(stderr, "\r\033[K%5.1f%%  %.1f s elapsed, about %.1f s left", 100.0 * f, elapsed,
@@ -202,6 +212,36 @@ private:
     bool stop_ = false;
 };
 
+// SIGINT and SIGTERM ask the running render to stop; a second signal gets the default action.
+std::atomic<bool>* gCancel = nullptr;
+volatile std::sig_atomic_t gSignal = 0;
+
+extern "C" void onStopSignal(int sig) {
+    if (gSignal != 0) {
+        std::signal(sig, SIG_DFL);
+        std::raise(sig);
+        return;
+    }
+    gSignal = sig;
+    if (gCancel) gCancel->store(true); // lock-free, so safe in a handler
+}
+
+void installStopHandlers(std::atomic<bool>& cancel) {
+    static_assert(std::atomic<bool>::is_always_lock_free);
+    gCancel = &cancel;
+    struct sigaction sa {};
+    sa.sa_handler = onStopSignal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, nullptr);
+    sigaction(SIGTERM, &sa, nullptr);
+}
+
+// out.exr -> out.partial.exr: where an interrupted render puts what it finished.
+std::string partialPath(const std::string& output) {
+    std::filesystem::path p(output);
+    return (p.parent_path() / (p.stem().string() + ".partial" + p.extension().string())).string();
+}
+
 double secondsSince(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
@@ -218,6 +258,9 @@ int renderCommand(int argc, char** argv) {
         std::fprintf(stderr, "pt render: %s\n", e.what());
         return 2;
     }
+
+    RenderProgress progress;
+    installStopHandlers(progress.cancel);
 
     auto t0 = std::chrono::steady_clock::now();
     Scene scene;
@@ -252,7 +295,6 @@ int renderCommand(int argc, char** argv) {
     }
     double bvhSeconds = secondsSince(t1);
 
-    RenderProgress progress;
     ProgressLine line(progress, !args.quiet && isatty(STDERR_FILENO));
     RenderResult result = renderImage(scene, *accel, scene.cameras[cameraIndex], args.width, args.height,
                                       uint32_t(args.spp), threads, args.settings, &progress,
@@ -276,6 +318,24 @@ int renderCommand(int argc, char** argv) {
     meta("pt:seed", std::to_string(args.settings.seed));
     meta("pt:maxDepth", std::to_string(args.settings.maxDepth));
     meta("pt:renderSeconds", std::to_string(result.seconds));
+    meta("pt:clamp", std::to_string(args.settings.clamp));
+    if (result.cancelled) {
+        // Never replace OUT with a partial image: the finished samples go beside it.
+        int status = 128 + int(gSignal ? gSignal : SIGINT);
+        uint32_t done = result.film.minSamples();
+        if (done == 0) {
+            std::fprintf(stderr, "pt: interrupted before every pixel had a sample; nothing written\n");
+            return status;
+        }
+        std::string partial = partialPath(args.output);
+        meta("pt:interrupted", "1");
+        std::string error = writeImage(partial, image);
+        if (!error.empty()) std::fprintf(stderr, "pt: error: %s\n", error.c_str());
+        else
+            std::fprintf(stderr, "pt: interrupted after %u of %lld spp; wrote them to %s (%s untouched)\n", done,
+                         args.spp, partial.c_str(), args.output.c_str());
+        return status;
+    }
     std::string error = writeImage(args.output, image);
     if (!error.empty()) {
         std::fprintf(stderr, "pt: error: %s\n", error.c_str());
@@ -283,11 +343,13 @@ int renderCommand(int argc, char** argv) {
     }
 
     const RayCounts& r = result.rays;
+    std::string clampNote =
+        args.settings.clamp > 0.0f ? ", " + std::to_string(r.clamped) + " clamped (--clamp biases the image)" : "";
     std::printf("pt: %dx%d, %u spp, %.3f s render (load %.3f s, bvh %.3f s), %.2f Mrays/s "
-                "(camera %.2fM, continuation %.2fM, shadow %.2fM), %llu discarded samples, %d threads -> %s\n",
+                "(camera %.2fM, continuation %.2fM, shadow %.2fM), %llu discarded samples%s, %d threads -> %s\n",
                 args.width, args.height, result.film.minSamples(), result.seconds, loadSeconds, bvhSeconds,
                 double(r.total()) / result.seconds * 1e-6, r.camera * 1e-6, r.continuation * 1e-6, r.shadow * 1e-6,
-                (unsigned long long)r.discarded, threads, args.output.c_str());
+                (unsigned long long)r.discarded, clampNote.c_str(), threads, args.output.c_str());
     return 0;
 }
 

@@ -145,6 +145,13 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
         ++counts.discarded;
         return Spectrum(0.0f);
     }
+    if (settings_.clamp > 0.0f) {
+        float peak = maxComponent(L);
+        if (peak > settings_.clamp) {
+            L *= settings_.clamp / peak;
+            ++counts.clamped;
+        }
+    }
     return L;
 }
 

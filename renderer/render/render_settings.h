@@ -20,6 +20,9 @@ struct RenderSettings {
     LightSampling lightSampling = LightSampling::Mis;
     HemisphereSampling hemisphere = HemisphereSampling::Cosine;
     SamplerKind sampler = SamplerKind::Sobol;
+    // Opt-in firefly clamp: a sample whose largest channel exceeds `clamp` is scaled down to it.
+    // Biased (energy is lost); 0 keeps the default, unbiased estimate.
+    float clamp = 0.0f;
 };
 
 // Ray and sample counts, summed per tile and then over the image.
@@ -28,6 +31,7 @@ struct RayCounts {
     uint64_t continuation = 0; // rays after a scattering event (BSDF-sampled)
     uint64_t shadow = 0;
     uint64_t discarded = 0; // samples that came out NaN or infinite and were dropped
+    uint64_t clamped = 0;   // samples scaled down by RenderSettings::clamp
 
     uint64_t total() const { return camera + continuation + shadow; }
     RayCounts& operator+=(const RayCounts& o) {
@@ -35,6 +39,7 @@ struct RayCounts {
         continuation += o.continuation;
         shadow += o.shadow;
         discarded += o.discarded;
+        clamped += o.clamped;
         return *this;
     }
 };

@@ -61,7 +61,7 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
                         film.add(pixel, sum, sumSq, last - first);
                         if (layers) film.addFirstHit(pixel, albedo, normal, depth, hits);
                     }
-                if (progress) progress->tilesDone.fetch_add(1, std::memory_order_relaxed);
+                if (progress) progress->done.fetch_add(last - first, std::memory_order_relaxed);
             }
         },
         tbb::simple_partitioner());
@@ -76,19 +76,19 @@ RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& c
     RenderResult result{Film(width, height), {}};
     if (firstHitLayers) result.film.enableFirstHitLayers();
     Renderer renderer(scene, accel, camera, width, height, settings);
-    // Passes of a few samples each keep progress smooth and let a cancel request stop the render
-    // within one pass; the film counts samples per pixel, so what was done stays usable.
-    uint32_t passSize = std::max<uint32_t>(1, spp / 32);
-    uint32_t passes = (spp + passSize - 1) / passSize;
-    if (progress) progress->tilesTotal = uint64_t(passes) * renderer.tileCount();
+    // Passes of 1, 1, 2, 4, ... samples, at most spp / 32: a cancel request stops the render within
+    // one pass of a tile, and the film counts samples per pixel, so what was done stays usable.
+    const uint32_t maxPass = std::max<uint32_t>(1, spp / 32);
+    if (progress) progress->total = uint64_t(spp) * renderer.tileCount();
 
     tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
     auto start = std::chrono::steady_clock::now();
     arena.execute([&] {
-        for (uint32_t first = 0; first < spp; first += passSize) {
+        for (uint32_t first = 0; first < spp;) {
             if (progress && progress->cancel.load()) break;
-            uint32_t last = std::min(spp, first + passSize);
+            uint32_t last = std::min(spp, first + std::clamp(first, 1u, maxPass));
             result.rays += renderer.renderSamples(result.film, first, last, progress);
+            first = last;
         }
         if (progress && progress->cancel.load()) result.cancelled = true;
     });

@@ -15,9 +15,10 @@
 namespace pt {
 
 // Shared between a render and whoever watches it (a progress line, a signal handler).
+// Work is counted in tile-samples: a tile finishing n samples per pixel adds n.
 struct RenderProgress {
-    std::atomic<uint64_t> tilesDone{0};
-    uint64_t tilesTotal = 0;
+    std::atomic<uint64_t> done{0};
+    uint64_t total = 0;
     std::atomic<bool> cancel{false};
 };
 
@@ -55,7 +56,9 @@ struct RenderResult {
 };
 
 // Renders `spp` samples per pixel with `threads` threads (0: all hardware threads), in passes so
-// that progress can be reported and a cancel request is honoured between passes.
+// that progress can be reported and a cancel request is honoured within one tile's pass. Passes
+// double in size from one sample, so a render stopped at any moment has at least half of the
+// samples it traced in complete passes over the whole image.
 // `firstHitLayers` also accumulates the albedo, normal and depth layers.
 RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
                          uint32_t spp, int threads, const RenderSettings& settings,
