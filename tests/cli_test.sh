@@ -57,6 +57,30 @@ oiiotool "$tmp/a.exr" --mulc 1.5 -o "$tmp/bright.exr"
 expect 1 "the images DIFFER" "$pt" diff "$tmp/bright.exr" "$tmp/a.exr"
 expect 2 "expected TEST and REFERENCE" "$pt" diff "$tmp/a.exr"
 
+# --clamp bounds every sample, so every pixel mean, and says so in the summary.
+expect 0 "clamped (--clamp biases the image)" "$pt" render "$scene" -spp 8 --res 32x32 --clamp 0.25 -o "$tmp/clamp.exr"
+max=$(oiiotool --stats "$tmp/clamp.exr" | awk '/Stats Max/ {print ($3 > $4 ? ($3 > $5 ? $3 : $5) : ($4 > $5 ? $4 : $5)); exit}')
+awk -v m="$max" 'BEGIN {exit !(m <= 0.25 + 1e-6)}' || { echo "FAIL: --clamp 0.25 left a pixel at $max"; failures=$((failures + 1)); }
+
+# SIGINT and SIGTERM: the render stops, the finished samples go to OUT.partial.EXT, OUT is untouched.
+for sig in INT TERM; do
+  cp "$tmp/a.exr" "$tmp/keep.exr"
+  before=$(md5sum < "$tmp/keep.exr")
+  "$pt" render "$scene" -spp 100000 --res 64x64 -q -o "$tmp/keep.exr" 2> "$tmp/stop.txt" &
+  pid=$!
+  sleep 3
+  kill -$sig $pid
+  wait $pid
+  status=$?
+  want=$([[ $sig == INT ]] && echo 130 || echo 143)
+  [[ $status -eq $want ]] || { echo "FAIL: SIG$sig: exit $status, expected $want"; failures=$((failures + 1)); }
+  grep -q "interrupted after" "$tmp/stop.txt" || { echo "FAIL: SIG$sig: $(cat "$tmp/stop.txt")"; failures=$((failures + 1)); }
+  [[ "$(md5sum < "$tmp/keep.exr")" == "$before" ]] || { echo "FAIL: SIG$sig replaced the output"; failures=$((failures + 1)); }
+  oiiotool --info -v "$tmp/keep.partial.exr" 2>/dev/null | grep -q 'pt:interrupted: "1"' ||
+    { echo "FAIL: SIG$sig: no partial image"; failures=$((failures + 1)); }
+  rm -f "$tmp/keep.partial.exr"
+done
+
 if [[ $failures -gt 0 ]]; then
   echo "$failures command-line checks failed"
   exit 1
