@@ -45,6 +45,12 @@ Scene loadScene(const std::string& path, Warnings& warnings) {
     } else {
         throw LoadError(path + ": unsupported scene format \"" + ext + "\"; expected .obj");
     }
+    completeScene(scene, warnings);
+    return scene;
+}
+
+void completeScene(Scene& scene, Warnings& warnings) {
+    const std::string& path = scene.path;
     if (scene.cameras.empty()) {
         scene.cameras.push_back(frameScene(scene));
         warnings.add(path + ": no camera defined; framing the whole scene from +z (add a newcamera "
@@ -60,7 +66,6 @@ Scene loadScene(const std::string& path, Warnings& warnings) {
                      " triangles have zero area; rays never hit them");
     if (scene.triangleCount() == 0 && scene.lights.empty())
         warnings.add(path + ": the scene has no geometry and no lights; only the environment will show");
-    return scene;
 }
 
 } // namespace pt

@@ -12,6 +12,10 @@ namespace pt {
 // file defines none, one framing the whole scene is added and a warning says so.
 Scene loadScene(const std::string& path, Warnings& warnings);
 
+// What loadScene does after parsing, for any format: adds the framing camera if there is none
+// and warns about degenerate triangles or an empty scene.
+void completeScene(Scene& scene, Warnings& warnings);
+
 // Axis-aligned bounds of all triangle vertices and lights.
 void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi);
 
