@@ -119,7 +119,7 @@ TEST(LabBsdf, DeltaLobeWeights) {
 // material over incident angles down to grazing, from both sides.
 TEST(LabBsdf, SamplingMatchesPdfAndEval) {
     for (const auto& [name, m] : labMaterials())
-        for (float cosO : {1.0f, 0.7f, 0.2f, 0.01f, -0.5f})
+        for (float cosO : {1.0f, 0.7f, 0.2f, 0.01f, 0.001f, -0.05f, -0.5f, -0.99f})
             for (HemisphereSampling h : {HemisphereSampling::Cosine, HemisphereSampling::Uniform}) {
                 Vec3 wo = directionAt(cosO);
                 LabBsdf b = LabBsdf::make(m, m.kd, wo.z, h);
@@ -140,6 +140,38 @@ TEST(LabBsdf, SamplingMatchesPdfAndEval) {
                 EXPECT_TRUE(r.pass) << name << " cos " << cosO << ": " << r.report;
                 EXPECT_TRUE(weightsOk) << name << " cos " << cosO;
             }
+}
+
+// The tree's delta lobes are chosen as often as their probabilities say: a chi-square test on
+// which lobe sample() took (mirror, refraction or Lambert), for every material and angle. From
+// inside at -0.9 no direction is beyond the critical angle, so a same-side delta is the mirror.
+TEST(LabBsdf, LobeChoiceMatchesProbabilities) {
+    for (const auto& [name, m] : labMaterials())
+        for (float cosO : {1.0f, 0.5f, 0.05f, 0.001f, -0.9f}) {
+            Vec3 wo = directionAt(cosO);
+            LabBsdf b = LabBsdf::make(m, m.kd, wo.z);
+            const int n = 200000;
+            double counts[3] = {0, 0, 0};
+            Pcg32 rng(5, 9);
+            for (int i = 0; i < n; ++i) {
+                BsdfSample s;
+                ASSERT_TRUE(b.sample(wo, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()), s)) << name;
+                int lobe = !s.delta ? 2 : s.wi.z * wo.z < 0.0f ? 1 : 0;
+                counts[lobe] += 1;
+            }
+            double expected[3] = {b.pMirror * double(n), b.pRefract * double(n), b.pDiffuse * double(n)};
+            double chi2 = 0;
+            int dof = -1;
+            for (int k = 0; k < 3; ++k) {
+                if (expected[k] == 0.0) {
+                    EXPECT_EQ(counts[k], 0.0) << name << " cos " << cosO << ": lobe " << k << " has probability 0";
+                    continue;
+                }
+                chi2 += (counts[k] - expected[k]) * (counts[k] - expected[k]) / expected[k];
+                ++dof;
+            }
+            if (dof > 0) EXPECT_GT(chiSquareSurvival(chi2, dof), 1e-4) << name << " cos " << cosO << ": chi2 " << chi2;
+        }
 }
 
 // White furnace per material: the expected sample weight (the albedo) never exceeds 1, and a
