@@ -89,3 +89,41 @@ TEST(SobolSampler, SecondDimensionTablesMatchDefinition) {
 
 } // namespace
 } // namespace pt
+
+namespace pt {
+namespace {
+
+// Beyond the Sobol dimensions values come from an independent stream of the same (pixel,
+// sample, seed): reached by drawing or by skipping, it never depends on what the sampler did
+// for an earlier path (which would make the image depend on the thread that ran it).
+TEST(SobolSampler, DeepDimensionsDependOnPixelSampleAndSeedOnly) {
+    const uint32_t deep = SobolSampler::kSobolDimensions + 3;
+    SobolSampler fresh;
+    fresh.startPixelSample(17, 5, 2);
+    fresh.skip(deep);
+    float expected = fresh.get1D();
+
+    SobolSampler used;
+    used.startPixelSample(3, 9, 2);
+    for (int i = 0; i < 40; ++i) used.get2D(); // another path, deep into its stream
+    used.startPixelSample(17, 5, 2);
+    used.skip(deep);
+    EXPECT_EQ(used.get1D(), expected);
+
+    // Uniform and uncorrelated across samples of a pixel.
+    double sum = 0, sumProduct = 0;
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) {
+        SobolSampler s;
+        s.startPixelSample(4, uint32_t(i), 0);
+        s.skip(deep);
+        Vec2 v = s.get2D();
+        sum += v.x;
+        sumProduct += (v.x - 0.5) * (v.y - 0.5);
+    }
+    EXPECT_NEAR(sum / n, 0.5, 0.01);
+    EXPECT_NEAR(sumProduct / n, 0.0, 0.005);
+}
+
+} // namespace
+} // namespace pt

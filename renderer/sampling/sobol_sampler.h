@@ -85,18 +85,29 @@ inline uint32_t mix32(uint32_t x) {
 
 class SobolSampler {
 public:
+    // Stratification pays on the first bounces; deeper dimensions come from an independent
+    // stream, which costs a tenth as much per value.
+    static constexpr uint32_t kSobolDimensions = 12; // the camera pair and two full vertices
+
     void startPixelSample(uint32_t pixelIndex, uint32_t sampleIndex, uint64_t seed) {
         pixelSeed_ = uint32_t(hashCombine(seed ^ 0x5bd1e995ULL, pixelIndex));
+        sampleIndex_ = sampleIndex;
         reversedIndex_ = sobol::reverseBits(sampleIndex); // the shuffle works on the reversed index
         dimension_ = 0;
+        tailStarted_ = false;
     }
     float get1D() {
+        if (dimension_ >= kSobolDimensions) return tail().nextFloat();
         uint32_t s = nextSeed();
         uint32_t i = shuffledIndex(s);
         // van der Corput is reverseBits(i): its reversed form is i itself.
         return sobol::toUnitFloat(sobol::scrambleReversed(i, s ^ 0xa511e9b3u));
     }
     Vec2 get2D() {
+        if (dimension_ >= kSobolDimensions) {
+            float a = tail().nextFloat();
+            return Vec2(a, rng_.nextFloat());
+        }
         uint32_t s = nextSeed();
         uint32_t i = shuffledIndex(s);
         uint32_t x = sobol::scrambleReversed(i, s ^ 0xa511e9b3u);
@@ -112,9 +123,22 @@ private:
     uint32_t shuffledIndex(uint32_t seed) const {
         return sobol::reverseBits(sobol::laineKarrasPermutation(reversedIndex_, seed));
     }
+    // The independent stream of this (pixel, sample, seed), started when first needed.
+    Pcg32& tail() {
+        ++dimension_;
+        if (!tailStarted_) {
+            uint64_t key = hashCombine(pixelSeed_, sampleIndex_);
+            rng_.seedWith(key, mixBits(key ^ 0x2545f4914f6cdd1dULL));
+            tailStarted_ = true;
+        }
+        return rng_;
+    }
 
     uint32_t pixelSeed_ = 0;
+    uint32_t sampleIndex_ = 0;
     uint32_t reversedIndex_ = 0;
+    bool tailStarted_ = false;
+    Pcg32 rng_;
     uint32_t dimension_ = 0;
 };
 
