@@ -1,7 +1,7 @@
 // pt-bench converge: error against time for each sampling method on one scene. Each method
 // renders at 1, 2, 4, ... samples per pixel until a render takes longer than half the budget;
 // the error is the relative MSE against a high-sample reference rendered by pt itself (MIS with
-// Sobol), cached as an EXR. Writes one CSV row per render; bench/plot_convergence.py charts it.
+// Sobol), cached as an EXR, averaged over several seeds where renders are short. Writes one CSV row per render; bench/plot_convergence.py charts it.
 #include "accel/accel.h"
 #include "bench/bench_common.h"
 #include "image/image_io.h"
@@ -131,16 +131,28 @@ int runConverge(int argc, char** argv) {
 
     std::string csvPath = o.outDir + "/converge_" + o.name + ".csv";
     std::ofstream csv(csvPath);
-    csv << "method,spp,seconds,rel_mse\n";
+    csv << "method,spp,seconds,rel_mse,renders\n"; // seconds and rel_mse: means over the renders
     for (const Method& m : methods()) {
         std::printf("  %-44s", m.name);
         for (uint32_t spp = 1;; spp *= 2) {
-            RenderResult r = renderImage(scene, *accel, camera, o.width, o.height, spp, threads, m.settings);
-            double err = relativeMse(r.film.mean(), reference);
-            csv << "\"" << m.name << "\"," << spp << "," << r.seconds << "," << err << "\n";
+            // One render's error is itself noisy (a firefly more or less), worst at low sample
+            // counts: average over renders with other seeds until about a second was spent.
+            double seconds = 0, err = 0;
+            int runs = 0;
+            RenderSettings settings = m.settings;
+            do {
+                settings.seed = m.settings.seed + uint64_t(runs);
+                RenderResult r = renderImage(scene, *accel, camera, o.width, o.height, spp, threads, settings);
+                seconds += r.seconds;
+                err += relativeMse(r.film.mean(), reference);
+                ++runs;
+            } while (seconds < 1.0 && runs < 16);
+            seconds /= runs;
+            err /= runs;
+            csv << "\"" << m.name << "\"," << spp << "," << seconds << "," << err << "," << runs << "\n";
             std::printf(" %u:%.2g", spp, err);
             std::fflush(stdout);
-            if (r.seconds > 0.5 * o.budget || spp >= o.referenceSpp / 8) break;
+            if (seconds > 0.5 * o.budget || spp >= o.referenceSpp / 8) break;
         }
         std::printf("\n");
     }

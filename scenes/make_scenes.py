@@ -175,7 +175,7 @@ def mis_lights():
     with open(os.path.join(HERE, "mis_lights.mtl"), "w") as f:
         f.write("# Lab keywords. The room is closed: only the panel and the spark light it.\n\n")
         f.write("newlight Spark\n\tlightposition 1.0 0.2 0.2\n\tlightcolor 1.0 0.9 0.7\n"
-                "\tlightradius 0.03\n\tlightintensity 1.5\n\n")
+                "\tlightradius 0.08\n\tlightintensity 1.5\n\n")
         f.write("newcamera Front\n\tcameraposition 0.0 0.4 3.4\n\tcameratarget 0.0 -0.4 -0.3\n"
                 "\tcameraup 0.0 1.0 0.0\n\tcamerafov 45.0\n\n")
         f.write("newmtl Floor\n\tdiffuseReflectance 0.6 0.6 0.6\n\treflat0deg 0.04\n\treflat90deg 1.0\n\n")
