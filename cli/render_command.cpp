@@ -232,8 +232,12 @@ void installStopHandlers(std::atomic<bool>& cancel) {
     struct sigaction sa {};
     sa.sa_handler = onStopSignal;
     sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, nullptr);
-    sigaction(SIGTERM, &sa, nullptr);
+    for (int sig : {SIGINT, SIGTERM}) {
+        struct sigaction old {};
+        sigaction(sig, nullptr, &old);
+        if (old.sa_handler == SIG_IGN) continue; // ignored by whoever started us (a background job): keep it so
+        sigaction(sig, &sa, nullptr);
+    }
 }
 
 // out.exr -> out.partial.exr: where an interrupted render puts what it finished.

@@ -63,6 +63,9 @@ max=$(oiiotool --stats "$tmp/clamp.exr" | awk '/Stats Max/ {print ($3 > $4 ? ($3
 awk -v m="$max" 'BEGIN {exit !(m <= 0.25 + 1e-6)}' || { echo "FAIL: --clamp 0.25 left a pixel at $max"; failures=$((failures + 1)); }
 
 # SIGINT and SIGTERM: the render stops, the finished samples go to OUT.partial.EXT, OUT is untouched.
+# Job control on: a script's background jobs otherwise start with SIGINT ignored, which pt
+# respects, as a user's shell script would expect.
+set -m
 for sig in INT TERM; do
   cp "$tmp/a.exr" "$tmp/keep.exr"
   before=$(md5sum < "$tmp/keep.exr")
@@ -80,6 +83,7 @@ for sig in INT TERM; do
     { echo "FAIL: SIG$sig: no partial image"; failures=$((failures + 1)); }
   rm -f "$tmp/keep.partial.exr"
 done
+set +m
 
 if [[ $failures -gt 0 ]]; then
   echo "$failures command-line checks failed"
