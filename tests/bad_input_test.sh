@@ -96,6 +96,8 @@ printf 'mtllib nothere.mtl\n%susemtl Red\nf 1 2 3\n' "$tri" > missing_mtl.obj
 check missing_mtllib 0 'missing_mtl.obj:1: mtllib "nothere.mtl" not found' render missing_mtl.obj -spp 2 --res 16x16 -o out/a.exr
 check missing_mtllib_material 0 'missing_mtl.obj:5: usemtl: material "Red" not found (its mtllib is missing)' \
   render missing_mtl.obj -spp 2 --res 16x16 -o out/a.exr
+printf 'mtllib %s\n%sf 1 2 3\n' "$(head -c 300 /dev/zero | tr '\0' m).mtl" "$tri" > long_mtllib.obj
+check mtllib_name_too_long 0 'long_mtllib.obj:1: mtllib "mmmm' render long_mtllib.obj -spp 2 --res 16x16 -o out/a.exr
 printf 'newmtl Red\nKd 1 0 0\nmap_Kd nothere.png\n' > tex.mtl
 printf 'mtllib tex.mtl\n%susemtl Red\nf 1 2 3\n' "$tri" > missing_tex.obj
 check missing_texture 0 'tex.mtl:3: map_Kd: texture "nothere.png" not found; using the plain colour' \

@@ -148,7 +148,8 @@ void ObjParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
         std::filesystem::path dir = std::filesystem::path(path).parent_path();
         // One name per line is the common case and may contain spaces; otherwise split on spaces.
         std::vector<std::string> names;
-        if (std::filesystem::exists(dir / std::string(rest))) {
+        std::error_code ec; // the non-throwing forms: a name can be too long for the file system
+        if (std::filesystem::exists(dir / std::string(rest), ec)) {
             names.emplace_back(rest);
         } else {
             Tokens words(rest, lines);
@@ -160,7 +161,7 @@ void ObjParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
                 loadMtl(file, scene, materialIndex, warnings);
             } catch (const LoadError& e) {
                 // A material library that does not exist is recoverable; a malformed one is not.
-                if (std::filesystem::exists(file)) throw;
+                if (std::filesystem::exists(file, ec)) throw;
                 warnings.add(t.location() + "mtllib \"" + name +
                              "\" not found; faces using its materials get the default material");
                 mtlMissing = true;
