@@ -2,6 +2,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "image/compare.h"
+#include "image/flip.h"
 #include "image/image_io.h"
 
 #include <cstdio>
@@ -25,6 +26,11 @@ options (default in brackets):
   --threshold T        without variance layers: fail when the relative MSE exceeds T [0.001]
   --heatmap OUT.png    write where the images differ (red at the threshold, yellow at twice it)
   --json OUT.json      write the report as JSON
+  --ppd P              pixels per degree of visual angle for FLIP [67, a 4K 0.7 m monitor at 0.7 m]
+
+Also reported, not part of the verdict: HDR-FLIP (Andersson et al. 2021), the mean perceptual
+difference in [0, 1] of the test against the reference at --ppd, which says how visible a
+difference is (noise included), where the z-test says whether it is more than noise.
   -q, --quiet          print only the verdict line
   -h, --help           show this help
 
@@ -34,7 +40,7 @@ mismatch, NaN or Inf in an image, which is reported with its pixel) or bad usage
 
 const char* channelName(int c) { return c == 0 ? "R" : c == 1 ? "G" : "B"; }
 
-std::string jsonReport(const CompareReport& r, const std::string& test, const std::string& ref) {
+std::string jsonReport(const CompareReport& r, const FlipResult& flip, const std::string& test, const std::string& ref) {
     auto esc = [](const std::string& s) {
         std::string o;
         for (char c : s) {
@@ -48,7 +54,9 @@ std::string jsonReport(const CompareReport& r, const std::string& test, const st
       << "  \"pass\": " << (r.pass ? "true" : "false") << ",\n  \"statistical\": " << (r.statistical ? "true" : "false")
       << ",\n  \"relative_mse\": " << r.relativeMse << ",\n  \"mean_abs_error\": " << r.meanAbsError
       << ",\n  \"z_threshold\": " << r.zThreshold << ",\n  \"tests\": " << r.tests
-      << ",\n  \"failed_tests\": " << r.failedTests << ",\n  \"worst\": [";
+      << ",\n  \"failed_tests\": " << r.failedTests << ",\n  \"flip_mean\": " << flip.mean
+      << ",\n  \"flip_exposures\": [" << flip.startExposure << ", " << flip.stopExposure << ", " << flip.exposures
+      << "],\n  \"worst\": [";
     for (size_t i = 0; i < r.worst.size(); ++i) {
         const BlockDifference& d = r.worst[i];
         j << (i ? ",\n" : "\n") << "    {\"x0\": " << d.x0 << ", \"y0\": " << d.y0 << ", \"x1\": " << d.x1
@@ -66,6 +74,7 @@ int diffCommand(int argc, char** argv) {
     CompareOptions options;
     double threshold = 1e-3;
     std::string heatmap, json;
+    float ppd = kFlipDefaultPpd;
     bool quiet = false;
     try {
         Args args(argc, argv, 1);
@@ -89,6 +98,8 @@ int diffCommand(int argc, char** argv) {
                 heatmap = args.value(opt);
             } else if (opt == "json") {
                 json = args.value(opt);
+            } else if (opt == "ppd") {
+                ppd = float(args.number(opt, 1.0, 1000.0));
             } else if (opt == "q" || opt == "quiet") {
                 quiet = true;
             } else {
@@ -122,6 +133,7 @@ int diffCommand(int argc, char** argv) {
         return 2;
     }
 
+    FlipResult flip = hdrFlip(test.rgb, reference.rgb, test.width, test.height, ppd);
     if (!quiet) {
         std::printf("pt diff: %s vs %s (%dx%d)\n", files[0].c_str(), files[1].c_str(), test.width, test.height);
         if (r.statistical) {
@@ -131,7 +143,8 @@ int diffCommand(int argc, char** argv) {
             std::printf("  warning: no variance layers (render with --aov variance); comparing relative MSE with "
                         "--threshold %g instead of a statistical test\n", threshold);
         }
-        std::printf("  relative MSE %.3g, mean absolute error %.3g\n", r.relativeMse, r.meanAbsError);
+        std::printf("  relative MSE %.3g, mean absolute error %.3g, HDR-FLIP %.4f (%.3g ppd, %d exposures from %+.2f to %+.2f)\n",
+                    r.relativeMse, r.meanAbsError, flip.mean, ppd, flip.exposures, flip.startExposure, flip.stopExposure);
         if (r.statistical && !r.worst.empty()) {
             std::printf("  largest differences:\n");
             for (const BlockDifference& d : r.worst) {
@@ -149,7 +162,7 @@ int diffCommand(int argc, char** argv) {
     }
     if (!json.empty()) {
         std::ofstream out(json);
-        out << jsonReport(r, files[0], files[1]);
+        out << jsonReport(r, flip, files[0], files[1]);
         if (!out) std::fprintf(stderr, "pt diff: cannot write %s\n", json.c_str());
     }
     return r.pass ? 0 : 1;

@@ -50,11 +50,14 @@ expect 0 "16x16, 4 spp" "$pt" render "$scene" -spp 4 --res 16x16 --camera Front 
 
 expect 0 "the images agree" "$pt" diff "$tmp/a.exr" "$tmp/a.exr" --heatmap "$tmp/heat.png" --json "$tmp/d.json"
 [[ -s "$tmp/heat.png" && -s "$tmp/d.json" ]] || { echo "FAIL: heatmap or JSON missing"; failures=$((failures + 1)); }
+expect 0 "HDR-FLIP 0.0000" "$pt" diff "$tmp/a.exr" "$tmp/a.exr"
+grep -q '"flip_mean": 0,' "$tmp/d.json" || { echo "FAIL: flip_mean of identical images is not 0"; failures=$((failures + 1)); }
 expect 2 "cannot read" "$pt" diff "$tmp/missing.exr" "$tmp/a.exr"
 "$pt" render "$scene" -spp 4 --res 8x8 --aov variance -q -o "$tmp/small.exr" >/dev/null
 expect 2 "size mismatch" "$pt" diff "$tmp/small.exr" "$tmp/a.exr"
 oiiotool "$tmp/a.exr" --mulc 1.5 -o "$tmp/bright.exr"
 expect 1 "the images DIFFER" "$pt" diff "$tmp/bright.exr" "$tmp/a.exr"
+expect 2 "--ppd: 0 is out of range" "$pt" diff "$tmp/bright.exr" "$tmp/a.exr" --ppd 0
 expect 2 "expected TEST and REFERENCE" "$pt" diff "$tmp/a.exr"
 
 # --clamp bounds every sample, so every pixel mean, and says so in the summary.
