@@ -1,0 +1,255 @@
+#!/usr/bin/env python3
+"""Renders a lab scene with Blender's Cycles (bpy from PyPI), a second independent check of pt.
+
+As in mitsuba_lab.py, the semantics come from the scene format's text:
+- Sphere lights are emissive meshes of radiance I / (pi r^2). The sphere is finely tessellated
+  and scaled so that its surface area, and so its mean projected area, is exactly 4 pi r^2.
+- The world is the sky above y = 0 and the ground below.
+- The camera is a pinhole with a vertical field of view and a box filter of one pixel.
+- Each material is the lab tree as a node graph. The Schlick weight comes from Layer Weight's
+  Facing output, which is 1 - |cos|. Total internal reflection is made explicit (Cycles' sharp
+  refraction drops a path there; the lab reflects it).
+- Cycles leaves out refraction's 1/eta^2 radiance scale. That cancels on the lab scenes, whose
+  glass objects are closed, with the camera and the lights outside.
+- Only flat-shaded scenes are modelled. pt's rule for smooth normals that disagree with the
+  geometry (see the README) is not Cycles'.
+
+Cycles' biasing defaults are turned off: light threshold, glossy filter, clamping, adaptive
+sampling and denoising. Each pass goes to its own EXR; combine_passes.py makes the mean and its
+variance. pt's --max-depth D scattering events are Cycles' D - 1 bounces: Cycles still adds
+emission found by the last bounce's ray.
+
+    cycles_lab.py SCENE --out-dir DIR [--res WxH] [--spp N] [--passes P] [--camera I]
+"""
+import argparse
+import math
+import os
+import sys
+import time
+
+import bpy
+import mathutils
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(__file__))
+from lab_scene import GROUND, SKY, fail, parse_mtl, parse_obj  # noqa: E402
+
+
+def node(tree, kind, **inputs):
+    n = tree.nodes.new(kind)
+    for k, v in inputs.items():
+        n.inputs[k].default_value = v
+    return n
+
+
+def math_node(tree, op, a=None, b=None):
+    n = tree.nodes.new("ShaderNodeMath")
+    n.operation = op
+    for i, v in enumerate((a, b)):
+        if isinstance(v, (int, float)):
+            n.inputs[i].default_value = v
+        elif v is not None:
+            tree.links.new(v, n.inputs[i])
+    return n.outputs[0]
+
+
+def lab_material(name, m):
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    tree = mat.node_tree
+    tree.nodes.clear()
+    link = tree.links.new
+    out = tree.nodes.new("ShaderNodeOutputMaterial")
+
+    diffuse = node(tree, "ShaderNodeBsdfDiffuse", Color=(*m["kd"], 1.0), Roughness=0.0)
+    if m["map_kd"]:
+        tex = tree.nodes.new("ShaderNodeTexImage")
+        tex.image = bpy.data.images.load(m["map_kd"])
+        tex.image.colorspace_settings.name = "sRGB"
+        tex.interpolation = "Linear"
+        tex.extension = "REPEAT"
+        mul = tree.nodes.new("ShaderNodeMix")
+        mul.data_type = "RGBA"
+        mul.blend_type = "MULTIPLY"
+        mul.inputs["Factor"].default_value = 1.0
+        link(tex.outputs["Color"], mul.inputs[6])
+        mul.inputs[7].default_value = (*m["kd"], 1.0)
+        link(mul.outputs[2], diffuse.inputs["Color"])
+
+    facing = tree.nodes.new("ShaderNodeLayerWeight")
+    facing.inputs["Blend"].default_value = 0.5  # Facing = 1 - |cos theta|
+    one_minus_cos = facing.outputs["Facing"]
+
+    # B1 = T Refr(eta) + (1 - T) Diffuse, with total internal reflection as a white mirror.
+    b1 = diffuse.outputs[0]
+    if m["t"] > 0:
+        refr = node(tree, "ShaderNodeBsdfRefraction", Color=(1, 1, 1, 1), Roughness=0.0, IOR=m["eta"])
+        tir_mirror = node(tree, "ShaderNodeBsdfGlossy", Color=(1, 1, 1, 1), Roughness=0.0)
+        geometry = tree.nodes.new("ShaderNodeNewGeometry")
+        # Leaving the glass (back face), sin^2 theta_t = eta^2 (1 - cos^2) > 1 reflects.
+        cos_i = math_node(tree, "SUBTRACT", 1.0, one_minus_cos)
+        sin2_t = math_node(tree, "MULTIPLY", math_node(tree, "SUBTRACT", 1.0, math_node(tree, "MULTIPLY", cos_i, cos_i)),
+                           m["eta"] * m["eta"])
+        tir = math_node(tree, "MULTIPLY", math_node(tree, "GREATER_THAN", sin2_t, 1.0), geometry.outputs["Backfacing"])
+        glass = tree.nodes.new("ShaderNodeMixShader")
+        link(tir, glass.inputs[0])
+        link(refr.outputs[0], glass.inputs[1])
+        link(tir_mirror.outputs[0], glass.inputs[2])
+        mix_t = tree.nodes.new("ShaderNodeMixShader")
+        mix_t.inputs[0].default_value = m["t"]
+        link(diffuse.outputs[0], mix_t.inputs[1])
+        link(glass.outputs[0], mix_t.inputs[2])
+        b1 = mix_t.outputs[0]
+
+    shader = b1
+    if m["w"] > 0:
+        # f = w F Spec(Ks) + (1 - w F) B1, F = R0 + (1 - R0)(1 - |cos|)^5.
+        spec = node(tree, "ShaderNodeBsdfGlossy", Color=(*m["ks"], 1.0), Roughness=0.0)
+        f = math_node(tree, "MULTIPLY_ADD", math_node(tree, "POWER", one_minus_cos, 5.0), 1.0 - m["r0"])
+        f.node.inputs[2].default_value = m["r0"]
+        wf = math_node(tree, "MULTIPLY", f, m["w"])
+        blend = tree.nodes.new("ShaderNodeMixShader")
+        link(wf, blend.inputs[0])
+        link(b1, blend.inputs[1])
+        link(spec.outputs[0], blend.inputs[2])
+        shader = blend.outputs[0]
+    link(shader, out.inputs["Surface"])
+    return mat
+
+
+def emission_material(name, radiance):
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    tree = mat.node_tree
+    tree.nodes.clear()
+    strength = max(radiance)
+    em = node(tree, "ShaderNodeEmission", Color=(*[c / strength for c in radiance], 1.0), Strength=strength)
+    out = tree.nodes.new("ShaderNodeOutputMaterial")
+    tree.links.new(em.outputs[0], out.inputs["Surface"])
+    return mat
+
+
+def add_mesh(name, positions, uvs, material):
+    corners = np.asarray(positions, dtype=np.float64)
+    mesh = bpy.data.meshes.new(name)
+    n = len(corners) // 3
+    mesh.from_pydata(corners.tolist(), [], [(3 * i, 3 * i + 1, 3 * i + 2) for i in range(n)])
+    uv = mesh.uv_layers.new()
+    for loop in mesh.loops:
+        uv.data[loop.index].uv = uvs[loop.vertex_index]
+    for p in mesh.polygons:
+        p.use_smooth = False
+    mesh.materials.append(material)
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.scene.collection.objects.link(obj)
+
+
+def add_sphere_light(index, light):
+    intensity = [c * light["intensity"] for c in light["color"]]
+    r = light["radius"]
+    if r <= 0:
+        fail("point lights are outside what this check models")
+    bpy.ops.mesh.primitive_uv_sphere_add(segments=128, ring_count=64, radius=r, location=light["pos"])
+    obj = bpy.context.active_object
+    area = sum(p.area for p in obj.data.polygons)
+    obj.scale = [math.sqrt(4 * math.pi * r * r / area)] * 3  # the exact sphere's area
+    obj.data.materials.append(emission_material(f"light{index}", [c / (math.pi * r * r) for c in intensity]))
+
+
+def look_at(obj, position, target, up):
+    p, t, u = (np.array(v, dtype=float) for v in (position, target, up))
+    forward = (t - p) / np.linalg.norm(t - p)
+    right = np.cross(forward, u)
+    right /= np.linalg.norm(right)
+    true_up = np.cross(right, forward)
+    m = np.identity(4)
+    m[:3, 0], m[:3, 1], m[:3, 2], m[:3, 3] = right, true_up, -forward, p  # cameras look down -Z
+    obj.matrix_world = mathutils.Matrix(m.tolist())  # rows; a nested list would be read as columns
+
+
+def build(scene_path, camera_index, width, height, max_depth):
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    scene = bpy.context.scene
+    scene.render.engine = "CYCLES"
+    c = scene.cycles
+    c.device = "CPU"
+    c.use_adaptive_sampling = False
+    c.use_denoising = False
+    c.max_bounces = c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = max_depth - 1
+    c.transparent_max_bounces = max_depth
+    c.volume_bounces = 0
+    c.caustics_reflective = c.caustics_refractive = True
+    c.blur_glossy = 0.0
+    c.sample_clamp_direct = c.sample_clamp_indirect = 0.0
+    c.light_sampling_threshold = 0.0
+    c.pixel_filter_type = "BOX"
+    c.filter_width = 1.0
+    scene.render.resolution_x, scene.render.resolution_y = width, height
+    scene.render.resolution_percentage = 100
+    scene.render.image_settings.file_format = "OPEN_EXR"
+    scene.render.image_settings.color_depth = "32"
+    scene.render.image_settings.color_mode = "RGB"
+    scene.view_settings.view_transform = "Standard"
+
+    mtllib, groups = parse_obj(scene_path)
+    materials, lights, cameras = parse_mtl(mtllib)
+    for k, (name, (pos, nrm, uv)) in enumerate(groups.items()):
+        m = materials.get(name) or fail(f"usemtl {name!r} names no material")
+        add_mesh(f"group{k}", pos, uv, lab_material(name, m))
+    for i, light in enumerate(lights):
+        add_sphere_light(i, light)
+
+    world = bpy.data.worlds.new("lab")
+    scene.world = world
+    world.use_nodes = True
+    tree = world.node_tree
+    tree.nodes.clear()
+    coords = tree.nodes.new("ShaderNodeTexCoord")  # in the world, Generated is the ray direction
+    xyz = tree.nodes.new("ShaderNodeSeparateXYZ")
+    tree.links.new(coords.outputs["Generated"], xyz.inputs[0])
+    above = math_node(tree, "GREATER_THAN", xyz.outputs["Y"], 0.0)
+    mix = tree.nodes.new("ShaderNodeMix")
+    mix.data_type = "RGBA"
+    tree.links.new(above, mix.inputs["Factor"])
+    mix.inputs[6].default_value = (*GROUND, 1.0)
+    mix.inputs[7].default_value = (*SKY, 1.0)
+    bg = node(tree, "ShaderNodeBackground", Strength=1.0)
+    tree.links.new(mix.outputs[2], bg.inputs["Color"])
+    out = tree.nodes.new("ShaderNodeOutputWorld")
+    tree.links.new(bg.outputs[0], out.inputs["Surface"])
+
+    cam = cameras[camera_index]
+    data = bpy.data.cameras.new("camera")
+    data.sensor_fit = "VERTICAL"
+    data.angle_y = math.radians(cam["fov"])
+    obj = bpy.data.objects.new("camera", data)
+    scene.collection.objects.link(obj)
+    look_at(obj, cam["position"], cam["target"], cam["up"])
+    scene.camera = obj
+    return scene
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("scene")
+    ap.add_argument("--out-dir", required=True)
+    ap.add_argument("--camera", type=int, default=0)
+    ap.add_argument("--res", default="128x128")
+    ap.add_argument("--spp", type=int, default=256, help="samples per pixel of each pass")
+    ap.add_argument("--passes", type=int, default=64)
+    ap.add_argument("--max-depth", type=int, default=16)
+    a = ap.parse_args()
+    width, height = (int(x) for x in a.res.lower().split("x"))
+    scene = build(a.scene, a.camera, width, height, a.max_depth)
+    scene.cycles.samples = a.spp
+    os.makedirs(a.out_dir, exist_ok=True)
+    start = time.time()
+    for p in range(a.passes):
+        scene.cycles.seed = p + 1
+        scene.render.filepath = os.path.join(a.out_dir, f"pass{p:04d}.exr")
+        bpy.ops.render.render(write_still=True)
+        print(f"pass {p + 1}/{a.passes}  {time.time() - start:.0f} s", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
