@@ -11,6 +11,7 @@ As in mitsuba_lab.py, the semantics come from the scene format's text:
   refraction drops a path there; the lab reflects it).
 - Cycles leaves out refraction's 1/eta^2 radiance scale. That cancels on the lab scenes, whose
   glass objects are closed, with the camera and the lights outside.
+- Textures are decoded from sRGB to linear before Cycles filters them, as pt and Mitsuba do.
 - Only flat-shaded scenes are modelled. pt's rule for smooth normals that disagree with the
   geometry (see the README) is not Cycles'.
 
@@ -53,6 +54,26 @@ def math_node(tree, op, a=None, b=None):
     return n.outputs[0]
 
 
+def linear_texture(path):
+    """An 8-bit sRGB texture decoded to linear floats, which Cycles then interpolates.
+
+    Cycles keeps 8-bit sRGB images as bytes and decodes after bilinear interpolation, which is
+    darker between unlike texels (the decoding is convex): on the lab's grid texture, 1 % on the
+    floor. pt and Mitsuba decode each texel first; this makes Cycles do the same.
+    """
+    src = bpy.data.images.load(path)
+    src.colorspace_settings.name = "Non-Color"  # raw encoded values
+    w, h = src.size
+    px = np.empty(w * h * 4, dtype=np.float32)
+    src.pixels.foreach_get(px)
+    rgb = px.reshape(-1, 4)[:, :3]
+    px.reshape(-1, 4)[:, :3] = np.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
+    img = bpy.data.images.new(os.path.basename(path) + ".linear", w, h, float_buffer=True)
+    img.colorspace_settings.name = "Linear Rec.709"
+    img.pixels.foreach_set(px)
+    return img
+
+
 def lab_material(name, m):
     mat = bpy.data.materials.new(name)
     mat.use_nodes = True
@@ -64,8 +85,7 @@ def lab_material(name, m):
     diffuse = node(tree, "ShaderNodeBsdfDiffuse", Color=(*m["kd"], 1.0), Roughness=0.0)
     if m["map_kd"]:
         tex = tree.nodes.new("ShaderNodeTexImage")
-        tex.image = bpy.data.images.load(m["map_kd"])
-        tex.image.colorspace_settings.name = "sRGB"
+        tex.image = linear_texture(m["map_kd"])
         tex.interpolation = "Linear"
         tex.extension = "REPEAT"
         mul = tree.nodes.new("ShaderNodeMix")
