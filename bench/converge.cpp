@@ -1,7 +1,8 @@
 // pt-bench converge: error against time for each sampling method on one scene. Each method
 // renders at 1, 2, 4, ... samples per pixel until a render takes longer than half the budget;
 // the error is the relative MSE against a high-sample reference rendered by pt itself (MIS with
-// Sobol), cached as an EXR, averaged over several seeds where renders are short. Writes one CSV row per render; bench/plot_convergence.py charts it.
+// Sobol), cached as an EXR, averaged over several seeds where renders are short. Writes one CSV
+// row per sample count; bench/plot_convergence.py charts it.
 #include "accel/accel.h"
 #include "bench/bench_common.h"
 #include "image/image_io.h"

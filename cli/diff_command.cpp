@@ -27,12 +27,12 @@ options (default in brackets):
   --heatmap OUT.png    write where the images differ (red at the threshold, yellow at twice it)
   --json OUT.json      write the report as JSON
   --ppd P              pixels per degree of visual angle for FLIP [67, a 4K 0.7 m monitor at 0.7 m]
+  -q, --quiet          print only the verdict line
+  -h, --help           show this help
 
 Also reported, not part of the verdict: HDR-FLIP (Andersson et al. 2021), the mean perceptual
 difference in [0, 1] of the test against the reference at --ppd, which says how visible a
 difference is (noise included), where the z-test says whether it is more than noise.
-  -q, --quiet          print only the verdict line
-  -h, --help           show this help
 
 exit status: 0 the images agree, 1 they differ, 2 bad input (missing or unreadable file, size
 mismatch, NaN or Inf in an image, which is reported with its pixel) or bad usage
@@ -133,7 +133,9 @@ int diffCommand(int argc, char** argv) {
         return 2;
     }
 
-    FlipResult flip = hdrFlip(test.rgb, reference.rgb, test.width, test.height, ppd);
+    // FLIP is only reported, never part of the verdict: skip it when nothing would show it.
+    FlipResult flip;
+    if (!quiet || !json.empty()) flip = hdrFlip(test.rgb, reference.rgb, test.width, test.height, ppd);
     if (!quiet) {
         std::printf("pt diff: %s vs %s (%dx%d)\n", files[0].c_str(), files[1].c_str(), test.width, test.height);
         if (r.statistical) {

@@ -65,11 +65,6 @@ TEST(SobolSampler, PixelsAndSeedsAreDecorrelated) {
     EXPECT_NEAR(sum / 20000, 0.5, 0.01);
 }
 
-} // namespace
-} // namespace pt
-
-namespace pt {
-namespace {
 
 // The byte tables give the second Sobol dimension exactly: compare with the definition (XOR of
 // direction numbers v_k = v_{k-1} ^ (v_{k-1} >> 1) over the set bits of the index).

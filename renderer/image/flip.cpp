@@ -216,6 +216,12 @@ float aces(float x) {
     return (x * x * kAces[0] + x * kAces[1] + kAces[2]) / (x * x * kAces[3] + x * kAces[4] + kAces[5]);
 }
 
+double meanOf(const std::vector<float>& values) {
+    double sum = 0;
+    for (float v : values) sum += v;
+    return values.empty() ? 0.0 : sum / double(values.size());
+}
+
 } // namespace
 
 FlipResult ldrFlip(const std::vector<float>& test, const std::vector<float>& reference, int width, int height, float ppd) {
@@ -224,13 +230,9 @@ FlipResult ldrFlip(const std::vector<float>& test, const std::vector<float>& ref
     std::vector<float> feature = featureError(t, r, width, height, ppd);
     FlipResult result;
     result.error.resize(color.size());
-    double sum = 0;
-    for (size_t i = 0; i < color.size(); ++i) {
-        // Features sharpen the colour error: a feature difference of 1 makes any colour error 1.
-        result.error[i] = std::pow(color[i], 1.0f - feature[i]);
-        sum += result.error[i];
-    }
-    result.mean = color.empty() ? 0.0 : sum / double(color.size());
+    // Features sharpen the colour error: a feature difference of 1 makes any colour error 1.
+    for (size_t i = 0; i < color.size(); ++i) result.error[i] = std::pow(color[i], 1.0f - feature[i]);
+    result.mean = meanOf(result.error);
     return result;
 }
 
@@ -273,9 +275,7 @@ FlipResult hdrFlip(const std::vector<float>& test, const std::vector<float>& ref
         FlipResult ldr = ldrFlip(te, re, width, height, ppd);
         for (size_t i = 0; i < n; ++i) result.error[i] = std::max(result.error[i], ldr.error[i]);
     }
-    double sum = 0;
-    for (float v : result.error) sum += v;
-    result.mean = n ? sum / double(n) : 0.0;
+    result.mean = meanOf(result.error);
     return result;
 }
 
