@@ -10,21 +10,12 @@ import argparse
 import sys
 
 import numpy as np
-import OpenImageIO as oiio
+
+from exr import RGB, VARIANCE, read_channels
 
 
 def read(path):
-    buf = oiio.ImageBuf(path)
-    if buf.has_error:
-        sys.exit(f"compare: {path}: {buf.geterror()}")
-    names = list(buf.spec().channelnames)
-    px = buf.get_pixels(oiio.FLOAT)
-    try:
-        rgb = px[:, :, [names.index(c) for c in ("R", "G", "B")]]
-        var = px[:, :, [names.index(f"variance.{c}") for c in ("R", "G", "B")]]
-    except ValueError:
-        sys.exit(f"compare: {path}: expected channels R,G,B and variance.R,G,B")
-    return rgb.astype(np.float64), var.astype(np.float64)
+    return read_channels(path, RGB), read_channels(path, VARIANCE)
 
 
 def region_stats(a, va, b, vb):

@@ -54,6 +54,26 @@ def math_node(tree, op, a=None, b=None):
     return n.outputs[0]
 
 
+def node_material(name):
+    """A material with an empty node tree, for the caller to fill."""
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    mat.node_tree.nodes.clear()
+    return mat, mat.node_tree
+
+
+def mix_shader(tree, fac, a, b):
+    """(1 - fac) a + fac b, with fac a number or a socket."""
+    mix = tree.nodes.new("ShaderNodeMixShader")
+    if isinstance(fac, (int, float)):
+        mix.inputs[0].default_value = fac
+    else:
+        tree.links.new(fac, mix.inputs[0])
+    tree.links.new(a, mix.inputs[1])
+    tree.links.new(b, mix.inputs[2])
+    return mix.outputs[0]
+
+
 def linear_texture(path):
     """An 8-bit sRGB texture decoded to linear floats, which Cycles then interpolates.
 
@@ -75,10 +95,7 @@ def linear_texture(path):
 
 
 def lab_material(name, m):
-    mat = bpy.data.materials.new(name)
-    mat.use_nodes = True
-    tree = mat.node_tree
-    tree.nodes.clear()
+    mat, tree = node_material(name)
     link = tree.links.new
     out = tree.nodes.new("ShaderNodeOutputMaterial")
 
@@ -111,15 +128,8 @@ def lab_material(name, m):
         sin2_t = math_node(tree, "MULTIPLY", math_node(tree, "SUBTRACT", 1.0, math_node(tree, "MULTIPLY", cos_i, cos_i)),
                            m["eta"] * m["eta"])
         tir = math_node(tree, "MULTIPLY", math_node(tree, "GREATER_THAN", sin2_t, 1.0), geometry.outputs["Backfacing"])
-        glass = tree.nodes.new("ShaderNodeMixShader")
-        link(tir, glass.inputs[0])
-        link(refr.outputs[0], glass.inputs[1])
-        link(tir_mirror.outputs[0], glass.inputs[2])
-        mix_t = tree.nodes.new("ShaderNodeMixShader")
-        mix_t.inputs[0].default_value = m["t"]
-        link(diffuse.outputs[0], mix_t.inputs[1])
-        link(glass.outputs[0], mix_t.inputs[2])
-        b1 = mix_t.outputs[0]
+        glass = mix_shader(tree, tir, refr.outputs[0], tir_mirror.outputs[0])
+        b1 = mix_shader(tree, m["t"], diffuse.outputs[0], glass)
 
     shader = b1
     if m["w"] > 0:
@@ -128,20 +138,13 @@ def lab_material(name, m):
         f = math_node(tree, "MULTIPLY_ADD", math_node(tree, "POWER", one_minus_cos, 5.0), 1.0 - m["r0"])
         f.node.inputs[2].default_value = m["r0"]
         wf = math_node(tree, "MULTIPLY", f, m["w"])
-        blend = tree.nodes.new("ShaderNodeMixShader")
-        link(wf, blend.inputs[0])
-        link(b1, blend.inputs[1])
-        link(spec.outputs[0], blend.inputs[2])
-        shader = blend.outputs[0]
+        shader = mix_shader(tree, wf, b1, spec.outputs[0])
     link(shader, out.inputs["Surface"])
     return mat
 
 
 def emission_material(name, radiance):
-    mat = bpy.data.materials.new(name)
-    mat.use_nodes = True
-    tree = mat.node_tree
-    tree.nodes.clear()
+    mat, tree = node_material(name)
     strength = max(radiance)
     em = node(tree, "ShaderNodeEmission", Color=(*[c / strength for c in radiance], 1.0), Strength=strength)
     out = tree.nodes.new("ShaderNodeOutputMaterial")

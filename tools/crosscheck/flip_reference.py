@@ -11,30 +11,18 @@ import os
 
 import flip_evaluator
 import numpy as np
-import OpenImageIO as oiio
+
+from exr import RGB, read_channels, write_channels
 
 DATA = os.path.join(os.path.dirname(__file__), "..", "..", "tests", "data", "flip")
 
 
-def read_rgb(path):
-    buf = oiio.ImageBuf(path)
-    names = list(buf.spec().channelnames)
-    return np.ascontiguousarray(buf.get_pixels(oiio.FLOAT)[:, :, [names.index(c) for c in "RGB"]])
-
-
 def write_grey(path, error):
-    error = np.ascontiguousarray(error.reshape(error.shape[0], error.shape[1], 1), dtype=np.float32)
-    spec = oiio.ImageSpec(error.shape[1], error.shape[0], 1, oiio.FLOAT)
-    spec.channelnames = ("Y",)
-    spec.attribute("compression", "zip")
-    out = oiio.ImageOutput.create(path)
-    out.open(path, spec)
-    out.write_image(error)
-    out.close()
+    write_channels(path, error.reshape(error.shape[0], error.shape[1], 1), ("Y",))
 
 
-reference = read_rgb(os.path.join(DATA, "reference.exr"))
-test = read_rgb(os.path.join(DATA, "test.exr"))
+reference = read_channels(os.path.join(DATA, "reference.exr"), RGB).astype(np.float32)
+test = read_channels(os.path.join(DATA, "test.exr"), RGB).astype(np.float32)
 hdr, hdr_mean, params = flip_evaluator.evaluate(reference, test, "HDR", inputsRGB=False, applyMagma=False)
 ldr, ldr_mean, _ = flip_evaluator.evaluate(np.clip(reference, 0, 1), np.clip(test, 0, 1), "LDR",
                                            inputsRGB=False, applyMagma=False)

@@ -26,6 +26,7 @@ import drjit as dr
 import mitsuba as mi
 
 sys.path.insert(0, os.path.dirname(__file__))
+from exr import write_mean_of_passes  # noqa: E402
 from lab_scene import GROUND, SKY, fail, parse_mtl, parse_obj, write_ply  # noqa: E402
 
 mi.set_variant("llvm_ad_rgb")
@@ -193,21 +194,6 @@ def build_scene(obj_path, camera_index, width, height, max_depth, pt_normals, tm
     return mi.load_dict(scene)
 
 
-def write_exr(path, mean, var, spp, seconds):
-    import OpenImageIO as oiio
-    h, w, _ = mean.shape
-    spec = oiio.ImageSpec(w, h, 6, oiio.FLOAT)
-    spec.channelnames = ("R", "G", "B", "variance.R", "variance.G", "variance.B")
-    spec.attribute("pt:renderer", f"mitsuba {mi.__version__} llvm_ad_rgb path")
-    spec.attribute("pt:spp", int(spp))
-    spec.attribute("pt:seconds", float(seconds))
-    out = oiio.ImageOutput.create(path)
-    if not out or not out.open(path, spec):
-        fail(f"cannot write {path}: {oiio.geterror()}")
-    out.write_image(np.concatenate([mean, var], axis=2).astype(np.float32))
-    out.close()
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("scene")
@@ -246,11 +232,10 @@ def main():
             total_sq += img * img
             print(f"\rpass {p + 1}/{a.passes}  {time.time() - start:.0f} s", end="", file=sys.stderr)
         print(file=sys.stderr)
-    n = a.passes
-    mean = total / n
-    var_of_mean = np.maximum(total_sq / n - mean * mean, 0) * n / (n - 1) / n
-    write_exr(a.out, mean, var_of_mean, a.spp * n, time.time() - start)
-    print(f"{a.out}: {width}x{height}, {a.spp * n} spp, {time.time() - start:.1f} s", file=sys.stderr)
+    write_mean_of_passes(a.out, total, total_sq, a.passes, {
+        "pt:renderer": f"mitsuba {mi.__version__} llvm_ad_rgb path", "pt:spp": a.spp * a.passes,
+        "pt:seconds": float(time.time() - start)})
+    print(f"{a.out}: {width}x{height}, {a.spp * a.passes} spp, {time.time() - start:.1f} s", file=sys.stderr)
 
 
 if __name__ == "__main__":
