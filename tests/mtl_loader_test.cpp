@@ -164,9 +164,9 @@ TEST(Mtl, ErrorsNameFileLineAndExpectation) {
              {"newmtl A\nlightradius 1\n", "test.mtl:2: lightradius outside a newlight block"},
              {"newlight L\nlightradius -1\n", "test.mtl:2: lightradius: expected a value >= 0"},
              {"newcamera C\ncameraposition 0 0 0\ncameratarget 0 0 0\n",
-              "test.mtl:1: camera \"C\": cameraposition equals cameratarget"},
-             {"newcamera C\ncameraposition 0 0 1\ncameraup 0 0 1\n", "test.mtl:1: camera \"C\": cameraup is zero or parallel"},
-             {"newcamera C\ncameraposition 0 0 1\ncamerafov 180\n", "test.mtl:1: camera \"C\": camerafov must be in (0, 180)"},
+              "test.mtl:3: camera \"C\": cameraposition equals cameratarget"},
+             {"newcamera C\ncameraposition 0 0 1\ncameraup 0 0 1\n", "test.mtl:3: camera \"C\": cameraup is zero or parallel"},
+             {"newcamera C\ncameraposition 0 0 1\ncamerafov 180\n", "test.mtl:3: camera \"C\": camerafov must be in (0, 180)"},
          }) {
         std::string e = errorOf(c.text);
         EXPECT_NE(e.find(c.expected), std::string::npos) << "got: " << e << "\nfor: " << c.text;

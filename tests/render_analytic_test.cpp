@@ -3,6 +3,7 @@
 #include "tests/test_scenes.h"
 
 #include "image/compare.h"
+#include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
@@ -229,6 +230,59 @@ TEST(Invariance, ScaleAndTranslation) {
                                      << " at " << report.worst[0].x0 << "," << report.worst[0].y0;
         }
     }
+}
+
+} // namespace
+} // namespace pt::test
+
+namespace pt::test {
+namespace {
+
+float largestCoordinate(const Scene& s) {
+    float m = 0.0f;
+    for (const Vec3& p : s.positions) m = std::max(m, maxComponent(glm::abs(p)));
+    for (const SphereLight& l : s.lights) m = std::max(m, maxComponent(glm::abs(l.center)) + l.radius);
+    for (const Camera& c : s.cameras) m = std::max(m, maxComponent(glm::abs(c.position)));
+    return m;
+}
+
+float triangleSpan(const Scene& s) {
+    Vec3 lo(kInf), hi(-kInf);
+    for (const Vec3& p : s.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    return safeLength(hi - lo);
+}
+
+// The two ends of the range the loaders accept (scene/scene_limits.h): the largest coordinate at
+// exactly kMaxCoordinate, and the triangles spanning exactly kMinSceneSize. Both scenes must
+// load and render the unit scene's image. Beyond either end Embree loses hits (the Cornell box
+// changes at 3x the largest coordinate accepted and at 1/300 of the smallest size).
+TEST(Invariance, AtTheLimitsOfTheAcceptedRange) {
+    for (const char* file : {"/scenes/cornell_box.obj", "/scenes/glass.obj"}) {
+        Warnings w;
+        Scene base = loadScene(std::string(PT_SOURCE_DIR) + file, w);
+        Rendered reference = render(base, 64, 64, 256);
+        for (float scale : {kMaxCoordinate / largestCoordinate(base), kMinSceneSize / triangleSpan(base)}) {
+            Scene scaled = transformed(base, scale, Vec3(0));
+            Warnings none;
+            ASSERT_NO_THROW(completeScene(scaled, none)) << file << " at scale " << scale << " is refused";
+            Rendered r = render(scaled, 64, 64, 256, RenderSettings{.seed = 5});
+            EXPECT_GT(r.rays.shadow, 0u);
+            CompareOptions options;
+            options.blockSize = 8;
+            CompareReport report = compareImages(toImage(r), toImage(reference), options);
+            EXPECT_TRUE(report.pass) << file << " scale " << scale << ": " << report.failedTests
+                                     << " tests differ; worst z " << report.worst[0].z;
+        }
+    }
+}
+
+// Just outside the range, the loaders refuse the scene instead of drawing a wrong image.
+TEST(Invariance, OutsideTheRangeIsRefused) {
+    Warnings w;
+    Scene base = loadScene(std::string(PT_SOURCE_DIR) + "/scenes/cornell_box.obj", w);
+    Scene tiny = transformed(base, 0.5f * kMinSceneSize / triangleSpan(base), Vec3(0));
+    Warnings none;
+    EXPECT_THROW(completeScene(tiny, none), LoadError);
 }
 
 } // namespace

@@ -88,7 +88,7 @@ TEST(Warp, UniformTriangleCoversEvenly) {
 }
 
 TEST(Distribution1D, SamplesInProportionAndNeverZeroWeights) {
-    Distribution1D d({1.0f, 0.0f, 3.0f, 0.0f, 4.0f});
+    Distribution1D d({1.0, 0.0, 3.0, 0.0, 4.0});
     EXPECT_FLOAT_EQ(d.pmf(0), 0.125f);
     EXPECT_FLOAT_EQ(d.pmf(1), 0.0f);
     EXPECT_FLOAT_EQ(d.pmf(4), 0.5f);
@@ -113,7 +113,7 @@ TEST(Distribution1D, SamplesInProportionAndNeverZeroWeights) {
 }
 
 TEST(Distribution1D, AllZeroFallsBackToUniform) {
-    Distribution1D d({0.0f, 0.0f});
+    Distribution1D d({0.0, 0.0});
     EXPECT_FLOAT_EQ(d.pmf(0), 0.5f);
     float pmf;
     EXPECT_EQ(d.sample(0.75f, &pmf), 1u);

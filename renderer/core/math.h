@@ -27,6 +27,22 @@ inline bool isFinite(const Vec3& v) {
 inline float sqr(float x) { return x * x; }
 inline float safeSqrt(float x) { return std::sqrt(std::max(0.0f, x)); }
 
+// Length and direction of a vector whose squared length may overflow or underflow float: the
+// cross product of two edges of a 1e10 triangle is 1e20, its square 1e40. Scaling by the largest
+// component first keeps both exact to rounding for every finite vector.
+inline float safeLength(const Vec3& v) {
+    float m = maxComponent(glm::abs(v));
+    if (!(m > 0.0f) || !std::isfinite(m)) return m;
+    return m * glm::length(v * (1.0f / m));
+}
+// Unit vector along v, or (0, 0, 0) when v is zero or not finite.
+inline Vec3 safeNormalize(const Vec3& v) {
+    float m = maxComponent(glm::abs(v));
+    if (!(m > 0.0f) || !std::isfinite(m)) return Vec3(0.0f);
+    Vec3 s = v * (1.0f / m);
+    return s * (1.0f / glm::length(s));
+}
+
 // Orthonormal basis around a unit vector n (Duff et al. 2017, "Building an Orthonormal Basis,
 // Revisited"): branchless and exact for every n, including n = (0, 0, -1).
 struct Frame {

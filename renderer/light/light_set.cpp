@@ -12,7 +12,7 @@
 namespace pt {
 
 LightSet::LightSet(const Scene& scene) : scene_(scene) {
-    std::vector<float> power;
+    std::vector<double> power; // in double: 2 pi A Le can pass float's range
     lightEmitter_.resize(scene.lights.size());
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const SphereLight& l = scene.lights[i];
@@ -22,7 +22,7 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
         e.radius = l.radius;
         e.radiance = l.isPoint() ? l.intensity : l.radiance();
         emitters_.push_back(e);
-        power.push_back(4.0f * kPi * average(l.intensity)); // same for a sphere and a point
+        power.push_back(4.0 * kPi * double(average(l.intensity))); // same for a sphere and a point
     }
     bool anyEmissive = false;
     for (const Material& m : scene.materials) anyEmissive |= m.isEmissive();
@@ -36,7 +36,7 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
             if (!m.isEmissive()) continue;
             const glm::uvec3& tri = scene.triPositions[t];
             const Vec3 &a = scene.positions[tri[0]], &b = scene.positions[tri[1]], &c = scene.positions[tri[2]];
-            float area = 0.5f * glm::length(glm::cross(b - a, c - a));
+            float area = 0.5f * safeLength(glm::cross(b - a, c - a));
             if (!(area > 0.0f)) continue; // degenerate triangles emit nothing and are never hit
             std::array<Vec3, 3> corners = {a, b, c};
             std::sort(corners.begin(), corners.end(), [](const Vec3& p, const Vec3& q) {
@@ -50,7 +50,7 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
             Emitter e{Emitter::Kind::Triangle, uint32_t(t)};
             e.radiance = m.emission;
             emitters_.push_back(e);
-            power.push_back(2.0f * kPi * area * average(m.emission)); // both sides emit
+            power.push_back(2.0 * kPi * double(area) * double(average(m.emission))); // both sides emit
         }
     }
     distribution_ = Distribution1D(power);
@@ -96,8 +96,8 @@ LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {
     s.point = bw.x * a + bw.y * b + bw.z * c;
     s.pointError = triangleOffsetError(a, b, c);
     Vec3 n = glm::cross(b - a, c - a);
-    float area2 = glm::length(n);
-    s.normal = n / area2;
+    float area2 = safeLength(n);
+    s.normal = safeNormalize(n);
     Vec3 d = s.point - p;
     float dist2 = glm::dot(d, d);
     if (!(dist2 > 0.0f)) return s;
@@ -117,8 +117,8 @@ float LightSet::pdf(size_t i, const Vec3& p, const Vec3& wi, float distance) con
     const glm::uvec3& tri = scene_.triPositions[e.index];
     const Vec3 &a = scene_.positions[tri[0]], &b = scene_.positions[tri[1]], &c = scene_.positions[tri[2]];
     Vec3 n = glm::cross(b - a, c - a);
-    float area2 = glm::length(n);
-    float cosLight = std::abs(glm::dot(n, wi)) / area2;
+    float area2 = safeLength(n);
+    float cosLight = std::abs(glm::dot(safeNormalize(n), wi));
     if (cosLight == 0.0f) return 0.0f;
     return distance * distance / (cosLight * 0.5f * area2);
 }

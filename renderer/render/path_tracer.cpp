@@ -7,9 +7,12 @@ namespace pt {
 namespace {
 
 // Veach's power heuristic (beta = 2) for two strategies with one sample each.
+// Written with the ratio of the pdfs, since their squares overflow float for a light whose solid
+// angle is tiny (a 1e-10 sphere seen from 1 has pdf 3e19).
 inline float powerHeuristic(float pdfA, float pdfB) {
-    float a = pdfA * pdfA, b = pdfB * pdfB;
-    return a > 0.0f ? a / (a + b) : 0.0f;
+    if (!(pdfA > 0.0f)) return 0.0f;
+    float r = pdfB / pdfA;
+    return 1.0f / (1.0f + r * r);
 }
 
 constexpr int kRouletteDepth = 3; // scattering events before Russian roulette starts

@@ -9,8 +9,8 @@ namespace pt {
 class PinholeCamera {
 public:
     PinholeCamera(const Camera& c, int width, int height) : origin_(c.position), width_(width), height_(height) {
-        Vec3 forward = glm::normalize(c.target - c.position);
-        Vec3 right = glm::normalize(glm::cross(forward, c.up)); // cameraup need not be orthogonal
+        Vec3 forward = safeNormalize(c.target - c.position); // a plain length underflows at 1e-19
+        Vec3 right = safeNormalize(glm::cross(forward, c.up)); // cameraup need not be orthogonal
         Vec3 up = glm::cross(right, forward);
         float tanY = std::tan(glm::radians(0.5f * c.fovY));
         float tanX = tanY * float(width) / float(height);

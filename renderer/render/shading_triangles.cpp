@@ -36,9 +36,8 @@ std::vector<ShadingTriangle> buildShadingTriangles(const Scene& scene) {
         bool usable = true;
         for (int k = 0; k < 3; ++k) {
             n[k] = scene.normals[scene.triNormals[t][k]];
-            float len = glm::length(n[k]);
-            usable &= len > 0.0f && std::isfinite(len);
-            n[k] /= len;
+            n[k] = safeNormalize(n[k]);
+            usable &= n[k] != Vec3(0.0f);
         }
         if (!usable) continue;
         if (n[0] == n[1] && n[0] == n[2]) {

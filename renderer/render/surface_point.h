@@ -21,9 +21,8 @@ inline SurfacePoint makeSurfacePoint(const ShadingTriangle& tri, const Hit& hit)
     sp.p = tri.p0 + hit.u * tri.e1 + hit.v * tri.e2;
     sp.pError = tri.offsetError;
     sp.material = tri.material();
-    Vec3 ng = glm::cross(tri.e1, tri.e2);
-    float len = glm::length(ng);
-    sp.ng = len > 0.0f ? ng / len : Vec3(0.0f, 0.0f, 1.0f);
+    sp.ng = safeNormalize(glm::cross(tri.e1, tri.e2)); // a plain length overflows beyond 4e9
+    if (sp.ng == Vec3(0.0f)) sp.ng = Vec3(0.0f, 0.0f, 1.0f);
     sp.ns = sp.ng;
     if (tri.materialAndFlags & ShadingTriangle::kFlat) {
         sp.ns = Vec3(tri.flatNormal[0], tri.flatNormal[1], tri.flatNormal[2]);

@@ -12,12 +12,12 @@ namespace pt {
 class Distribution1D {
 public:
     Distribution1D() = default;
-    explicit Distribution1D(const std::vector<float>& weights) {
+    explicit Distribution1D(const std::vector<double>& weights) {
         cdf_.resize(weights.size() + 1);
         cdf_[0] = 0.0;
         double sum = 0.0;
         for (size_t i = 0; i < weights.size(); ++i) {
-            sum += std::max(0.0f, weights[i]);
+            sum += std::max(0.0, weights[i]);
             cdf_[i + 1] = sum;
         }
         total_ = sum;

@@ -24,6 +24,11 @@ struct PendingLight {
     float intensity = 1.0f;
 };
 
+// Lines of a camera block's keywords, so an error points at the value that is wrong.
+struct CameraLines {
+    size_t position = 0, target = 0, up = 0, fov = 0;
+};
+
 struct MtlParser {
     MtlParser(const std::string& p, Scene& s, std::unordered_map<std::string, uint32_t>& index, Warnings& w)
         : path(p), scene(s), materialIndex(index), warnings(w) {}
@@ -37,6 +42,7 @@ struct MtlParser {
     PendingMaterial material;
     PendingLight light;
     Camera camera;
+    CameraLines cameraLines;
     size_t blockLine = 0;
 
     void finishBlock();
@@ -46,6 +52,7 @@ struct MtlParser {
     void requireBlock(Block wanted, std::string_view keyword, const Tokens& t) const;
     float nonNegative(Tokens& t, std::string_view keyword);
     Spectrum nonNegativeColor(Tokens& t, std::string_view keyword);
+    Spectrum reflectance(Tokens& t, std::string_view keyword);
     float unitInterval(Tokens& t, std::string_view keyword);
     int loadTexture(std::string_view spec, std::string_view keyword, const LineReader& lines);
 };
@@ -58,7 +65,7 @@ void MtlParser::requireBlock(Block wanted, std::string_view keyword, const Token
 
 float MtlParser::nonNegative(Tokens& t, std::string_view keyword) {
     float v = t.number(keyword);
-    if (v < 0.0f) t.fail(std::string(keyword) + ": expected a value >= 0, found " + std::to_string(v));
+    if (v < 0.0f) t.fail(std::string(keyword) + ": expected a value >= 0, found " + shortNumber(v));
     return v;
 }
 
@@ -69,10 +76,20 @@ Spectrum MtlParser::nonNegativeColor(Tokens& t, std::string_view keyword) {
     return c;
 }
 
+// Kd and Ks above 1 reflect more light than arrives: allowed (artists do it), but said once.
+Spectrum MtlParser::reflectance(Tokens& t, std::string_view keyword) {
+    Spectrum c = nonNegativeColor(t, keyword);
+    if (maxComponent(c) > 1.0f)
+        warnings.once("reflectance:" + path + ":" + material.m.name,
+                      t.location() + std::string(keyword) + " above 1 in material \"" + material.m.name +
+                          "\" creates energy (it reflects more light than it receives); expected values <= 1");
+    return c;
+}
+
 float MtlParser::unitInterval(Tokens& t, std::string_view keyword) {
     float v = t.number(keyword);
     if (v < 0.0f || v > 1.0f)
-        t.fail(std::string(keyword) + ": expected a value in [0, 1], found " + std::to_string(v));
+        t.fail(std::string(keyword) + ": expected a value in [0, 1], found " + shortNumber(v));
     return v;
 }
 
@@ -118,24 +135,40 @@ void MtlParser::finishMaterial() {
 }
 
 void MtlParser::finishCamera() {
-    Vec3 dir = camera.target - camera.position;
-    auto fail = [&](const std::string& what) {
-        throw LoadError(path, blockLine, "camera \"" + camera.name + "\": " + what);
+    const CameraLines& at = cameraLines;
+    auto fail = [&](size_t line, const std::string& what) {
+        throw LoadError(path, line ? line : blockLine, "camera \"" + camera.name + "\": " + what);
     };
-    if (glm::length(dir) == 0.0f) fail("cameraposition equals cameratarget; expected distinct points");
-    if (glm::length(camera.up) == 0.0f || glm::length(glm::cross(dir, camera.up)) <= 1e-6f * glm::length(dir) * glm::length(camera.up))
-        fail("cameraup is zero or parallel to the viewing direction");
-    if (!(camera.fovY > 0.0f && camera.fovY < 180.0f)) fail("camerafov must be in (0, 180) degrees");
+    Vec3 dir = safeNormalize(camera.target - camera.position);
+    if (dir == Vec3(0.0f))
+        fail(std::max(at.position, at.target), "cameraposition equals cameratarget; expected distinct points");
+    Vec3 up = safeNormalize(camera.up);
+    if (up == Vec3(0.0f) || safeLength(glm::cross(dir, up)) <= 1e-6f)
+        fail(at.up, "cameraup is zero or parallel to the viewing direction");
+    if (!(camera.fovY > 0.0f && camera.fovY < 180.0f)) fail(at.fov, "camerafov must be in (0, 180) degrees");
+    if (at.position == 0 && at.target == 0)
+        warnings.add(path + ":" + std::to_string(blockLine) + ": camera \"" + camera.name +
+                     "\" has neither cameraposition nor cameratarget; it sits at the origin looking along -z");
     scene.cameras.push_back(camera);
 }
 
 void MtlParser::finishBlock() {
     switch (block) {
     case Block::Material: finishMaterial(); break;
-    case Block::Light:
-        light.light.intensity = light.color * light.intensity;
-        scene.lights.push_back(light.light);
+    case Block::Light: {
+        SphereLight& l = light.light;
+        l.intensity = light.color * light.intensity;
+        if (l.source.empty()) l.source = path + ":" + std::to_string(blockLine) + ": ";
+        // A sphere's radiance is known here; limits relative to the scene's size are checked once
+        // the whole scene is loaded (completeScene).
+        if (!l.isPoint() && maxComponent(l.radiance()) > kMaxRadiance)
+            throw LoadError(l.source + "light \"" + l.name + "\": lightintensity " + shortNumber(maxComponent(l.intensity)) +
+                            " on a sphere of radius " + shortNumber(l.radius) + " emits radiance " +
+                            shortNumber(maxComponent(l.radiance())) + ", beyond the 1e18 that float samples and "
+                            "their variance can hold");
+        scene.lights.push_back(l);
         break;
+    }
     case Block::Camera: finishCamera(); break;
     case Block::None: break;
     }
@@ -172,6 +205,7 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
         block = Block::Camera;
         blockLine = lines.lineNumber();
         camera = Camera{};
+        cameraLines = CameraLines{};
         camera.name = blockName("newcamera");
         return;
     }
@@ -180,14 +214,14 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
     Material& m = material.m;
     if (is("Kd") || is("diffuseReflectance")) {
         requireBlock(Block::Material, keyword, t);
-        m.kd = nonNegativeColor(t, keyword);
+        m.kd = reflectance(t, keyword);
     } else if (is("map_Kd") || is("diffuseReflectanceMap")) {
         requireBlock(Block::Material, keyword, t);
         m.kdTexture = loadTexture(t.restOfLine(), keyword, lines);
         return;
     } else if (is("Ks") || is("specularReflectance")) {
         requireBlock(Block::Material, keyword, t);
-        m.ks = nonNegativeColor(t, keyword);
+        m.ks = reflectance(t, keyword);
     } else if (is("reflat0deg")) {
         requireBlock(Block::Material, keyword, t);
         m.r0 = nonNegativeColor(t, keyword);
@@ -211,6 +245,9 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
     } else if (is("emittance") || is("Ke")) {
         requireBlock(Block::Material, keyword, t);
         m.emission = nonNegativeColor(t, keyword);
+        if (maxComponent(m.emission) > kMaxRadiance)
+            t.fail(std::string(keyword) + ": radiance " + shortNumber(maxComponent(m.emission)) +
+                   " is beyond the 1e18 that float samples and their variance can hold");
     } else if (is("Pm")) {
         requireBlock(Block::Material, keyword, t);
         material.metallic = unitInterval(t, keyword);
@@ -225,23 +262,31 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
     } else if (is("lightradius")) {
         requireBlock(Block::Light, keyword, t);
         light.light.radius = nonNegative(t, keyword);
+        if (light.light.radius > kMaxCoordinate)
+            t.fail("lightradius: beyond 1e12, the largest size pt renders correctly; scale the scene down");
+        light.light.radiusSource = t.location();
     } else if (is("lightintensity")) {
         requireBlock(Block::Light, keyword, t);
         light.intensity = nonNegative(t, keyword);
+        light.light.source = t.location();
     }
     // Cameras.
     else if (is("cameraposition")) {
         requireBlock(Block::Camera, keyword, t);
         camera.position = t.point(keyword);
+        cameraLines.position = lines.lineNumber();
     } else if (is("cameratarget")) {
         requireBlock(Block::Camera, keyword, t);
         camera.target = t.point(keyword);
+        cameraLines.target = lines.lineNumber();
     } else if (is("cameraup")) {
         requireBlock(Block::Camera, keyword, t);
         camera.up = t.vec3(keyword);
+        cameraLines.up = lines.lineNumber();
     } else if (is("camerafov")) {
         requireBlock(Block::Camera, keyword, t);
         camera.fovY = t.number(keyword);
+        cameraLines.fov = lines.lineNumber();
     } else {
         std::string k = toLower(keyword);
         warnings.once("mtl:" + k, t.location() + "unknown keyword \"" +

@@ -27,6 +27,8 @@ struct SphereLight {
     Vec3 center{0.0f};
     float radius = 0.0f;
     Spectrum intensity{1.0f}; // lightintensity * lightcolor
+    std::string source;       // "file:line: " of its lightintensity (or newlight), for messages
+    std::string radiusSource; // same for lightradius
 
     bool isPoint() const { return radius <= 0.0f; }
     Spectrum radiance() const { return intensity / (kPi * radius * radius); }

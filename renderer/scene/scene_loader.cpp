@@ -1,6 +1,7 @@
 #include "scene/scene_loader.h"
 
 #include "scene/obj_loader.h"
+#include "scene/scene_limits.h"
 #include "scene/text_parser.h"
 
 #include <filesystem>
@@ -37,6 +38,44 @@ static Camera frameScene(const Scene& scene) {
     return c;
 }
 
+// The limits of scene/scene_limits.h that depend on the size of the whole scene.
+static void checkSceneLimits(const Scene& scene) {
+    Vec3 lo(kInf), hi(-kInf);
+    for (const glm::uvec3& tri : scene.triPositions)
+        for (int k = 0; k < 3; ++k) {
+            lo = glm::min(lo, scene.positions[tri[k]]);
+            hi = glm::max(hi, scene.positions[tri[k]]);
+        }
+    if (lo.x <= hi.x) {
+        float size = safeLength(hi - lo);
+        if (size < kMinSceneSize)
+            throw LoadError(scene.path + ": the scene's triangles span only " + shortNumber(size) +
+                            " across; pt renders scenes of at least 1e-6 correctly (Embree's float ray test "
+                            "loses hits below it); scale the scene up");
+    }
+    Vec3 all_lo, all_hi;
+    sceneBounds(scene, all_lo, all_hi);
+    for (const Camera& c : scene.cameras) {
+        all_lo = glm::min(all_lo, c.position);
+        all_hi = glm::max(all_hi, c.position);
+    }
+    float size = all_lo.x <= all_hi.x ? safeLength(all_hi - all_lo) : 0.0f;
+    for (const SphereLight& l : scene.lights) {
+        float peak = maxComponent(l.intensity);
+        if (l.isPoint()) {
+            double limit = double(kMaxRadiance) * sqr(kPointLightDistanceFraction * std::max(size, kMinSceneSize));
+            if (peak > limit)
+                throw LoadError(l.source + "light \"" + l.name + "\": lightintensity " + shortNumber(peak) +
+                                " of a point light in a scene " + shortNumber(size) + " across is beyond " +
+                                shortNumber(limit) + " (1e18 x (size/10)^2), where samples overflow float");
+        } else if (l.radius < kMinLightRadiusFraction * size) {
+            throw LoadError((l.radiusSource.empty() ? l.source : l.radiusSource) + "light \"" + l.name +
+                            "\": lightradius " + shortNumber(l.radius) + " is below 1e-12 of the scene's size (" +
+                            shortNumber(size) + "), where its solid angle underflows float; use 0 for a point light");
+        }
+    }
+}
+
 Scene loadScene(const std::string& path, Warnings& warnings) {
     std::string ext = toLower(std::filesystem::path(path).extension().string());
     Scene scene;
@@ -59,11 +98,12 @@ void completeScene(Scene& scene, Warnings& warnings) {
     size_t degenerate = 0;
     for (const glm::uvec3& tri : scene.triPositions) {
         const Vec3 &a = scene.positions[tri[0]], &b = scene.positions[tri[1]], &c = scene.positions[tri[2]];
-        degenerate += !(glm::length(glm::cross(b - a, c - a)) > 0.0f);
+        degenerate += !(safeLength(glm::cross(b - a, c - a)) > 0.0f);
     }
     if (degenerate > 0)
         warnings.add(path + ": " + std::to_string(degenerate) + " of " + std::to_string(scene.triangleCount()) +
                      " triangles have zero area; rays never hit them");
+    checkSceneLimits(scene);
     if (scene.triangleCount() == 0 && scene.lights.empty())
         warnings.add(path + ": the scene has no geometry and no lights; only the environment will show");
 }

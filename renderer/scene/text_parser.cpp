@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -121,7 +122,8 @@ Vec3 Tokens::vec3(std::string_view what) {
 Vec3 Tokens::point(std::string_view what) {
     Vec3 p = vec3(what);
     if (maxComponent(glm::abs(p)) > kMaxCoordinate)
-        fail(std::string(what) + ": coordinate beyond +-1e18; expected a scene within that range");
+        fail(std::string(what) + ": coordinate beyond +-1e12, the largest pt renders correctly (Embree's float "
+                                 "arithmetic overflows beyond it); scale the scene down");
     return p;
 }
 
@@ -135,6 +137,12 @@ Spectrum Tokens::color(std::string_view what) {
 void Tokens::expectEnd(std::string_view keyword) {
     if (!empty())
         fail(std::string(keyword) + ": unexpected " + quoted(word()) + " at the end of the line");
+}
+
+std::string shortNumber(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
 }
 
 bool equalsIgnoreCase(std::string_view a, std::string_view b) {

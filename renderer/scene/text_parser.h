@@ -4,6 +4,7 @@
 
 #include "core/math.h"
 #include "scene/load_error.h"
+#include "scene/scene_limits.h"
 
 #include <string>
 #include <string_view>
@@ -43,9 +44,8 @@ public:
     float number(std::string_view what);
     int integer(std::string_view what);
     Vec3 vec3(std::string_view what);
-    // A point in the scene: three numbers within +-kMaxCoordinate. Embree silently drops triangles
-    // with larger coordinates, so they are refused here, where the line is known.
-    static constexpr float kMaxCoordinate = 1e18f;
+    // A point in the scene: three numbers within +-kMaxCoordinate (scene/scene_limits.h). Embree
+    // loses hits beyond it, so larger ones are refused here, where the line is known.
     Vec3 point(std::string_view what);
     // One value replicated to three channels, or three values (the MTL colour forms).
     Spectrum color(std::string_view what);
@@ -60,6 +60,9 @@ private:
     std::string_view rest_;
     const LineReader& where_;
 };
+
+// A number for a message: "1e+38", "0.5", not "100000000000000000000000000000000000000.000000".
+std::string shortNumber(double v);
 
 // Case-insensitive ASCII comparison, for MTL keywords.
 bool equalsIgnoreCase(std::string_view a, std::string_view b);

@@ -1,0 +1,25 @@
+// The range of scenes pt renders correctly, measured, not guessed: tests/render_analytic_test.cpp
+// renders the Cornell box and the glass scene at each end of it and compares them with the unit
+// scene. Loaders refuse what lies outside with the file and line, instead of drawing a silently
+// wrong image.
+#pragma once
+
+namespace pt {
+
+// Largest coordinate. Embree 3's float ray-triangle test forms products of three lengths: the
+// Cornell box renders unchanged with coordinates up to 9e12 and loses hits at 3e13.
+inline constexpr float kMaxCoordinate = 1e12f;
+// Smallest scene (diagonal of the triangles' bounding box). Embree's test also has absolute
+// thresholds: the box is unchanged down to 3e-8 across and loses light at 3.5e-9.
+inline constexpr float kMinSceneSize = 1e-6f;
+// Largest emitted radiance (Ke, or a sphere light's I / (pi r^2)), per channel. A sample's square
+// must fit in float for the variance layer: 1e18 leaves 1e38.
+inline constexpr float kMaxRadiance = 1e18f;
+// A point light's intensity is bounded so that at a tenth of the scene's size from it the
+// irradiance stays below kMaxRadiance: I <= kMaxRadiance * (size / 10)^2.
+inline constexpr float kPointLightDistanceFraction = 0.1f;
+// Smallest sphere light radius, as a fraction of the scene's size: below it the light's solid
+// angle underflows float and the light vanishes. Radius 0 is a point light.
+inline constexpr float kMinLightRadiusFraction = 1e-12f;
+
+} // namespace pt
