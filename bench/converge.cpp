@@ -110,8 +110,8 @@ int runConverge(int argc, char** argv) {
     std::vector<float> reference;
     Image cached;
     if (readImage(refPath, cached).empty() && cached.width == o.width && cached.height == o.height) {
-        for (const auto& [k, v] : cached.metadata)
-            if (k == "pt:spp" && v == std::to_string(o.referenceSpp)) reference = cached.rgb;
+        for (const ImageAttribute& a : cached.metadata)
+            if (a.name == "pt:spp" && a.asText() == std::to_string(o.referenceSpp)) reference = cached.rgb;
     }
     if (reference.empty()) {
         std::printf("converge %s: rendering the %u-spp reference...\n", o.name.c_str(), o.referenceSpp);
@@ -123,7 +123,7 @@ int runConverge(int argc, char** argv) {
         img.width = o.width;
         img.height = o.height;
         img.rgb = r.film.mean();
-        img.metadata = {{"pt:spp", std::to_string(o.referenceSpp)}, {"pt:scene", o.scene}};
+        img.metadata = {ImageAttribute::integerValue("pt:spp", o.referenceSpp), ImageAttribute::string("pt:scene", o.scene)};
         std::string error = writeImage(refPath, img);
         if (!error.empty()) std::fprintf(stderr, "converge: %s\n", error.c_str());
         reference = img.rgb;

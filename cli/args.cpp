@@ -2,26 +2,46 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace pt::cli {
 
+std::string formatNumber(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
 Args::Args(int argc, char** argv, int first) {
-    for (int i = first; i < argc; ++i) args_.emplace_back(argv[i]);
+    for (int i = first; i < argc; ++i) {
+        if (endOfOptions_ == std::string::npos && std::string(argv[i]) == "--") {
+            endOfOptions_ = args_.size(); // "--" itself is not an argument
+            continue;
+        }
+        args_.emplace_back(argv[i]);
+    }
 }
 
 bool Args::nextOption(std::string& name) {
-    if (hasPending_) throw UsageError("option --" + pendingOption_ + " does not take a value");
+    if (hasPending_) throw UsageError("option " + spelled_ + " does not take a value");
+    if (pos_ >= endOfOptions_) return false;
     const std::string& a = args_[pos_];
     if (a.size() < 2 || a[0] != '-' || (a[1] >= '0' && a[1] <= '9')) return false;
     ++pos_;
-    name = a.substr(a[1] == '-' ? 2 : 1);
+    size_t dashes = a[1] == '-' ? 2 : 1;
+    name = a.substr(dashes);
     if (auto eq = name.find('='); eq != std::string::npos) {
         pendingValue_ = name.substr(eq + 1);
         hasPending_ = true;
         name = name.substr(0, eq);
         pendingOption_ = name;
     }
+    spelled_ = a.substr(0, dashes) + name;
     return true;
+}
+
+std::string Args::spelled(const std::string& option) const {
+    return spelled_.empty() ? "--" + option : spelled_;
 }
 
 std::string Args::positional() { return args_[pos_++]; }
@@ -31,7 +51,7 @@ std::string Args::value(const std::string& option) {
         hasPending_ = false;
         return pendingValue_;
     }
-    if (pos_ >= args_.size()) throw UsageError("option --" + option + " needs a value");
+    if (pos_ >= args_.size()) throw UsageError("option " + spelled(option) + " needs a value");
     return args_[pos_++];
 }
 
@@ -40,9 +60,9 @@ long long Args::integer(const std::string& option, long long lo, long long hi) {
     long long x = 0;
     auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
     if (ec != std::errc() || ptr != v.data() + v.size() || v.empty())
-        throw UsageError("option --" + option + ": expected an integer, got \"" + v + "\"");
+        throw UsageError("option " + spelled(option) + ": expected an integer, got \"" + v + "\"");
     if (x < lo || x > hi)
-        throw UsageError("option --" + option + ": " + v + " is out of range [" + std::to_string(lo) + ", " +
+        throw UsageError("option " + spelled(option) + ": " + v + " is out of range [" + std::to_string(lo) + ", " +
                          std::to_string(hi) + "]");
     return x;
 }
@@ -51,11 +71,16 @@ double Args::number(const std::string& option, double lo, double hi) {
     std::string v = value(option);
     double x = 0;
     auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+    if (ec == std::errc::result_out_of_range && ptr == v.data() + v.size()) {
+        // Underflow (1e-400) is a number, just a very small one; overflow is refused below.
+        x = std::strtod(v.c_str(), nullptr);
+        ec = std::errc();
+    }
     if (ec != std::errc() || ptr != v.data() + v.size() || v.empty() || !std::isfinite(x))
-        throw UsageError("option --" + option + ": expected a number, got \"" + v + "\"");
+        throw UsageError("option " + spelled(option) + ": expected a finite number, got \"" + v + "\"");
     if (x < lo || x > hi)
-        throw UsageError("option --" + option + ": " + v + " is out of range [" + std::to_string(lo) + ", " +
-                         std::to_string(hi) + "]");
+        throw UsageError("option " + spelled(option) + ": " + v + " is out of range [" + formatNumber(lo) + ", " +
+                         formatNumber(hi) + "]");
     return x;
 }
 

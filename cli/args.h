@@ -1,5 +1,6 @@
 // Command-line parsing shared by the subcommands. Options may be written -name or --name, with
-// the value as the next argument or after '='. Errors are UsageError (exit status 2).
+// the value as the next argument or after '='; "--" ends the options, so a file named "-x.obj"
+// can follow it. Errors are UsageError (exit status 2) and quote the option as it was typed.
 #pragma once
 
 #include <cstdint>
@@ -25,12 +26,18 @@ public:
     std::string value(const std::string& option);
     long long integer(const std::string& option, long long lo, long long hi);
     double number(const std::string& option, double lo, double hi); // finite, in [lo, hi]
+    // The option as the user typed it ("-o", "--spp"), for messages.
+    std::string spelled(const std::string& option) const;
 
 private:
     std::vector<std::string> args_;
     size_t pos_ = 0;
-    std::string pendingOption_, pendingValue_;
+    std::string pendingOption_, pendingValue_, spelled_;
     bool hasPending_ = false;
+    size_t endOfOptions_ = std::string::npos; // index of the first argument after "--"
 };
+
+// A number for a message: "3e+38", "0.5", "1e-12", never a 39-digit expansion.
+std::string formatNumber(double v);
 
 } // namespace pt::cli

@@ -1,12 +1,13 @@
 // pt diff: is a render statistically the same image as a reference?
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/console.h"
+#include "io/output_file.h"
 #include "image/compare.h"
 #include "image/flip.h"
 #include "image/image_io.h"
 
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 namespace pt::cli {
@@ -34,8 +35,11 @@ Also reported, not part of the verdict: HDR-FLIP (Andersson et al. 2021), the me
 difference in [0, 1] of the test against the reference at --ppd, which says how visible a
 difference is (noise included), where the z-test says whether it is more than noise.
 
-exit status: 0 the images agree, 1 they differ, 2 bad input (missing or unreadable file, size
-mismatch, NaN or Inf in an image, which is reported with its pixel) or bad usage
+The heat map and the JSON are written whole or not at all, and never over TEST or REFERENCE.
+
+exit status: 0 the images agree, 1 they differ, 2 bad input (a missing or unreadable file, not a
+regular file, a multipart EXR, sizes or channel lists that differ, NaN or Inf in an image, which is
+reported with its pixel), bad usage, or a report that could not be written
 )";
 
 const char* channelName(int c) { return c == 0 ? "R" : c == 1 ? "G" : "B"; }
@@ -76,6 +80,8 @@ int diffCommand(int argc, char** argv) {
     std::string heatmap, json;
     float ppd = kFlipDefaultPpd;
     bool quiet = false;
+    FILE* err = errorStream();
+    OutputFile heatmapFile, jsonFile;
     try {
         Args args(argc, argv, 1);
         while (!args.done()) {
@@ -102,34 +108,61 @@ int diffCommand(int argc, char** argv) {
                 ppd = float(args.number(opt, 1.0, 1000.0));
             } else if (opt == "q" || opt == "quiet") {
                 quiet = true;
+                silenceLibraryOutput();
+                err = errorStream();
             } else {
-                throw UsageError("unknown option \"" + opt + "\" (pt diff --help lists the options)");
+                throw UsageError("unknown option \"" + args.spelled(opt) + "\" (pt diff --help lists the options)");
             }
         }
         if (files.size() != 2) throw UsageError("expected TEST and REFERENCE images, got " + std::to_string(files.size()));
-        if (!heatmap.empty()) {
-            if (formatFromPath(heatmap) != ImageFormat::Png) throw UsageError("--heatmap: expected a .png path");
-            std::string problem = checkOutputPath(heatmap);
+        if (!heatmap.empty() && formatFromPath(heatmap) != ImageFormat::Png) throw UsageError("--heatmap: expected a .png path");
+        for (const std::string* out : {&heatmap, &json}) {
+            if (out->empty()) continue;
+            for (const std::string& in : files)
+                if (sameFile(*out, in))
+                    throw UsageError("output \"" + *out + "\" is also an input (\"" + in + "\"); choose another name");
+        }
+        if (!heatmap.empty() && !json.empty() && sameFile(heatmap, json))
+            throw UsageError("--heatmap and --json name the same file");
+        // Created before any work, so that a folder that refuses them fails now.
+        for (auto [path, file] : {std::pair{&heatmap, &heatmapFile}, std::pair{&json, &jsonFile}}) {
+            if (path->empty()) continue;
+            std::string problem = file->open(*path);
             if (!problem.empty()) throw UsageError(problem);
         }
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "pt diff: %s\n", e.what());
+        std::fprintf(err, "pt diff: %s\n", e.what());
         return 2;
     }
 
     Image test, reference;
     for (auto [path, image] : {std::pair{&files[0], &test}, std::pair{&files[1], &reference}}) {
         std::string error = readImage(*path, *image);
+        if (error.empty() && image->parts > 1)
+            error = "\"" + *path + "\" has " + std::to_string(image->parts) +
+                    " parts; pt diff compares single-part images such as pt render writes";
         if (!error.empty()) {
-            std::fprintf(stderr, "pt diff: %s\n", error.c_str());
+            std::fprintf(err, "pt diff: %s\n", error.c_str());
             return 2;
         }
+    }
+    bool sameSize = test.width == reference.width && test.height == reference.height; // else compareImages says so
+    if (sameSize && test.channelNames != reference.channelNames) {
+        auto list = [](const std::vector<std::string>& names) {
+            std::string s;
+            for (const std::string& n : names) s += (s.empty() ? "" : ",") + n;
+            return s;
+        };
+        std::fprintf(err, "pt diff: %s and %s have different channels (%s against %s); render both with the same --aov\n",
+                     files[0].c_str(), files[1].c_str(), list(test.channelNames).c_str(),
+                     list(reference.channelNames).c_str());
+        return 2;
     }
     options.testSpp = samplesPerPixel(test);
     options.referenceSpp = samplesPerPixel(reference);
     CompareReport r = compareImages(test, reference, options, threshold);
     if (!r.inputError.empty()) {
-        std::fprintf(stderr, "pt diff: %s vs %s: %s\n", files[0].c_str(), files[1].c_str(), r.inputError.c_str());
+        std::fprintf(err, "pt diff: %s vs %s: %s\n", files[0].c_str(), files[1].c_str(), r.inputError.c_str());
         return 2;
     }
 
@@ -158,16 +191,25 @@ int diffCommand(int argc, char** argv) {
     }
     std::printf("pt diff: %s\n", r.pass ? "the images agree" : "the images DIFFER");
 
-    if (!heatmap.empty()) {
-        std::string error = writeImage(heatmap, heatmapImage(r, reference));
-        if (!error.empty()) std::fprintf(stderr, "pt diff: %s\n", error.c_str());
+    int status = r.pass ? 0 : 1;
+    if (heatmapFile.isOpen()) {
+        std::vector<unsigned char> bytes;
+        std::string error = encodeImage(ImageFormat::Png, heatmapImage(r, reference), bytes);
+        if (error.empty()) error = heatmapFile.commit(bytes.data(), bytes.size());
+        if (!error.empty()) {
+            std::fprintf(err, "pt diff: --heatmap: %s\n", error.c_str());
+            status = 2;
+        }
     }
-    if (!json.empty()) {
-        std::ofstream out(json);
-        out << jsonReport(r, flip, files[0], files[1]);
-        if (!out) std::fprintf(stderr, "pt diff: cannot write %s\n", json.c_str());
+    if (jsonFile.isOpen()) {
+        std::string text = jsonReport(r, flip, files[0], files[1]);
+        std::string error = jsonFile.commit(text.data(), text.size());
+        if (!error.empty()) {
+            std::fprintf(err, "pt diff: --json: %s\n", error.c_str());
+            status = 2;
+        }
     }
-    return r.pass ? 0 : 1;
+    return status;
 }
 
 } // namespace pt::cli

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <new>
 
 static const char* kUsage = R"(pt )" PT_VERSION R"( - a headless path tracer on Embree
 
@@ -40,6 +41,9 @@ int main(int argc, char** argv) {
     try {
         if (!std::strcmp(cmd, "render")) return pt::cli::renderCommand(argc - 1, argv + 1);
         if (!std::strcmp(cmd, "diff")) return pt::cli::diffCommand(argc - 1, argv + 1);
+    } catch (const std::bad_alloc&) { // each stage names what it allocates; this is the last resort
+        std::fprintf(stderr, "pt: error: out of memory\n");
+        return 1;
     } catch (const std::exception& e) { // last resort: never an uncaught exception trace
         std::fprintf(stderr, "pt: error: %s\n", e.what());
         return 1;

@@ -2,11 +2,15 @@
 #include "accel/accel.h"
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/console.h"
+#include "io/output_file.h"
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 
+#include <tbb/info.h>
 #include <tbb/task_arena.h>
+#include <sys/ioctl.h>
 #include <csignal>
 #include <unistd.h>
 
@@ -15,6 +19,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -32,8 +37,10 @@ options (default in brackets):
   -spp, --spp N          samples per pixel [16]
   --res WxH              image size in pixels [512x512]
   --camera NAME|INDEX    camera by name, or by 0-based index in file order [0]
-  --threads N            worker threads; 0 uses every hardware thread [0]
-  --seed S               random seed; the image depends only on it, never on --threads [0]
+  --threads N            worker threads; 0 uses every hardware thread, and more than the
+                         machine has are cut to that many, with a warning [0]
+  --seed S               random seed in [0, 2147483647]; the image depends only on it,
+                         never on --threads [0]
   --max-depth D          most scattering events on a path: 0 shows only emitters seen
                          directly, 1 gives direct lighting [16]
   --light-sampling M     direct light by mis (light and BSDF sampling, weighted),
@@ -48,15 +55,19 @@ options (default in brackets):
                            depth     distance to the first hit, +inf where none (depth.Z)
   --clamp X              scale down any sample whose largest channel exceeds X: fewer
                          fireflies, but biased (light is lost); 0 is off [0]
-  -q, --quiet            print neither warnings nor progress, only the summary line
+  -q, --quiet            print neither warnings nor progress (nor the libraries' own lines),
+                         only errors and the summary line
   -h, --help             show this help
+  --                     end of the options: a SCENE named "-x.obj" may follow
 
 Progress goes to stderr when it is a terminal; one summary line always ends the render.
 Ctrl-C (SIGINT) or SIGTERM stops the render within a moment: the samples finished so far go to
 OUT with ".partial" before the extension (out.partial.exr), and OUT itself is left untouched.
-A second signal quits at once.
-exit status: 0 success, 1 bad input (scene, texture, failed write), 2 bad usage,
-             130 or 143 interrupted by SIGINT or SIGTERM
+A second signal quits at once, removing any file being written: nothing partial is left behind.
+Images are written whole or not at all (a temporary file beside OUT, renamed into place); the
+temporary file is created before rendering, so an output that cannot be written fails at once.
+exit status: 0 success, 1 bad input (scene, texture) or a failed write, 2 bad usage (options,
+             an output that cannot be created or is also an input), 130 or 143 interrupted
 )";
 
 struct RenderArgs {
@@ -76,8 +87,9 @@ void parseResolution(const std::string& v, int& w, int& h) {
     unsigned long long a = 0, b = 0;
     char x = 0, extra = 0;
     std::istringstream in(v);
-    if (!(in >> a >> x >> b) || (x != 'x' && x != 'X') || (in >> extra) || a == 0 || b == 0)
-        throw UsageError("option --res: expected WIDTHxHEIGHT such as 512x512, got \"" + v + "\"");
+    bool digitsOnly = v.find_first_not_of("0123456789xX") == std::string::npos;
+    if (!digitsOnly || !(in >> a >> x >> b) || (x != 'x' && x != 'X') || (in >> extra) || a == 0 || b == 0)
+        throw UsageError("option --res: expected WIDTHxHEIGHT with two positive sizes such as 512x512, got \"" + v + "\"");
     if (a > 65536 || b > 65536) throw UsageError("option --res: " + v + " exceeds the 65536 pixel limit per side");
     w = int(a);
     h = int(b);
@@ -107,7 +119,7 @@ RenderArgs parseArgs(int argc, char** argv) {
         } else if (opt == "threads") {
             r.threads = int(args.integer(opt, 0, 4096));
         } else if (opt == "seed") {
-            r.settings.seed = uint64_t(args.integer(opt, 0, (1LL << 62)));
+            r.settings.seed = uint64_t(args.integer(opt, 0, 2147483647)); // an int in the EXR metadata
         } else if (opt == "max-depth") {
             r.settings.maxDepth = int(args.integer(opt, 0, 100000));
         } else if (opt == "light-sampling") {
@@ -136,11 +148,11 @@ RenderArgs parseArgs(int argc, char** argv) {
                 else throw UsageError("option --aov: unknown layer \"" + name + "\"; known: variance, albedo, normal, depth");
             }
         } else if (opt == "clamp") {
-            r.settings.clamp = float(args.number(opt, 0.0, 3e38));
+            r.settings.clamp = float(args.number(opt, 0.0, 1e30));
         } else if (opt == "q" || opt == "quiet") {
             r.quiet = true;
         } else {
-            throw UsageError("unknown option \"" + opt + "\" (pt render --help lists the options)");
+            throw UsageError("unknown option \"" + args.spelled(opt) + "\" (pt render --help lists the options)");
         }
     }
     if (positional.empty()) throw UsageError("missing the SCENE argument");
@@ -169,10 +181,11 @@ size_t pickCamera(const Scene& scene, const std::string& spec) {
     throw UsageError("--camera " + spec + ": no such camera; the scene has " + names);
 }
 
-// Redraws one progress line on stderr until told to stop.
+// Redraws one progress line on stderr until told to stop, cut to the terminal's width so that
+// it never wraps onto a second line.
 class ProgressLine {
 public:
-    ProgressLine(const RenderProgress& progress, bool enabled) : progress_(progress) {
+    ProgressLine(const RenderProgress& progress, uint32_t spp, bool enabled) : progress_(progress), spp_(spp) {
         if (enabled) thread_ = std::thread([this] { run(); });
     }
     ~ProgressLine() { stop(); }
@@ -196,31 +209,40 @@ private:
             double total = double(std::max<uint64_t>(1, progress_.total));
             double f = double(progress_.done.load()) / total;
             double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (f > 0.0)
-                std::fprintf(stderr, "\r\033[K%5.1f%%  %.1f s elapsed, about %.1f s left", 100.0 * f, elapsed,
-                             elapsed * (1.0 - f) / f);
-            else
-                std::fprintf(stderr, "\r\033[K  0.0%%  %.1f s elapsed", elapsed);
+            char text[160];
+            int n = std::snprintf(text, sizeof text, "%5.1f%%  %u/%u spp  %.1f s elapsed", 100.0 * f,
+                                  progress_.samplesComplete.load(), spp_, elapsed);
+            if (f > 0.0 && n > 0 && size_t(n) < sizeof text)
+                std::snprintf(text + n, sizeof text - size_t(n), ", about %.1f s left", elapsed * (1.0 - f) / f);
+            struct winsize ws {};
+            size_t width = ioctl(STDERR_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0 ? ws.ws_col : 80;
+            std::string line(text);
+            if (line.size() >= width) line.resize(width - 1); // the cursor must not reach the last column
+            std::fprintf(stderr, "\r\033[K%s", line.c_str());
             std::fflush(stderr);
         }
     }
 
     const RenderProgress& progress_;
+    uint32_t spp_;
     std::thread thread_;
     std::mutex mutex_;
     std::condition_variable wake_;
     bool stop_ = false;
 };
 
-// SIGINT and SIGTERM ask the running render to stop; a second signal gets the default action.
+// SIGINT and SIGTERM ask the running render to stop. A second signal quits at once: it removes
+// any temporary output file (so nothing truncated is left), says so, and exits.
 std::atomic<bool>* gCancel = nullptr;
 volatile std::sig_atomic_t gSignal = 0;
 
 extern "C" void onStopSignal(int sig) {
     if (gSignal != 0) {
-        std::signal(sig, SIG_DFL);
-        std::raise(sig);
-        return;
+        removeTemporaryOutputs();
+        static const char message[] = "pt: second signal: stopped at once; no output file was written or left behind\n";
+        ssize_t ignored = write(errorFd(), message, sizeof message - 1);
+        (void)ignored;
+        _exit(128 + sig);
     }
     gSignal = sig;
     if (gCancel) gCancel->store(true); // lock-free, so safe in a handler
@@ -250,16 +272,65 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+const char* name(LightSampling m) { return m == LightSampling::Mis ? "mis" : m == LightSampling::Nee ? "nee" : "bsdf"; }
+const char* name(HemisphereSampling h) { return h == HemisphereSampling::Cosine ? "cosine" : "uniform"; }
+const char* name(SamplerKind k) { return k == SamplerKind::Sobol ? "sobol" : "random"; }
+
+// Every option that changes the image, so that a file says how to make it again.
+void addMetadata(Image& image, const RenderArgs& args, const Scene& scene, const std::string& camera,
+                 const RenderResult& result, int threads) {
+    auto text = [&](const char* k, const std::string& v) { image.metadata.push_back(ImageAttribute::string(k, v)); };
+    auto integer = [&](const char* k, long long v) { image.metadata.push_back(ImageAttribute::integerValue(k, v)); };
+    auto real = [&](const char* k, double v) { image.metadata.push_back(ImageAttribute::floatValue(k, v)); };
+    std::error_code ec;
+    std::string resolved = std::filesystem::weakly_canonical(std::filesystem::absolute(scene.path, ec), ec).string();
+    text("Software", "pt " PT_VERSION);
+    text("pt:version", PT_VERSION);
+    text("pt:scene", args.scene);
+    text("pt:sceneResolved", ec ? args.scene : resolved);
+    text("pt:camera", camera);
+    integer("pt:spp", result.film.minSamples());
+    integer("pt:sppRequested", args.spp);
+    integer("pt:seed", (long long)args.settings.seed);
+    integer("pt:maxDepth", args.settings.maxDepth);
+    text("pt:sampler", name(args.settings.sampler));
+    text("pt:lightSampling", name(args.settings.lightSampling));
+    text("pt:hemisphere", name(args.settings.hemisphere));
+    real("pt:clamp", args.settings.clamp);
+    integer("pt:threadsRequested", args.threads);
+    integer("pt:threads", threads);
+    real("pt:renderSeconds", result.seconds);
+}
+
+// Refuses an output that is also one of the render's inputs: writing it would destroy the input.
+std::string outputIsInput(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
+    for (const std::string& out : outputs)
+        for (const std::string& in : inputs)
+            if (sameFile(out, in))
+                return "output \"" + out + "\" is also an input (\"" + in + "\"); choose another output name";
+    return "";
+}
+
 } // namespace
 
 int renderCommand(int argc, char** argv) {
+    FILE* err = errorStream();
     RenderArgs args;
+    std::string partial;
     try {
         args = parseArgs(argc, argv);
-        std::string outputProblem = checkOutputPath(args.output);
-        if (!outputProblem.empty()) throw UsageError(outputProblem);
+        if (args.quiet) {
+            silenceLibraryOutput();
+            err = errorStream();
+        }
+        std::string problem = checkOutputPath(args.output);
+        partial = partialPath(args.output);
+        // The partial image's name must fit as well: found out only at Ctrl-C would be too late.
+        if (problem.empty()) problem = checkOutputLocation(partial);
+        if (problem.empty()) problem = outputIsInput({args.output, partial}, {args.scene});
+        if (!problem.empty()) throw UsageError(problem);
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "pt render: %s\n", e.what());
+        std::fprintf(err, "pt render: %s\n", e.what());
         return 2;
     }
 
@@ -272,38 +343,66 @@ int renderCommand(int argc, char** argv) {
     try {
         scene = loadScene(args.scene, warnings);
     } catch (const LoadError& e) {
-        std::fprintf(stderr, "pt: error: %s\n", e.what());
+        std::fprintf(err, "pt: error: %s\n", e.what());
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(err, "pt: error: %s: out of memory while loading the scene (its files or textures are too large "
+                          "for this machine)\n", args.scene.c_str());
         return 1;
     }
-    if (!args.quiet)
-        for (const std::string& w : warnings.messages()) std::fprintf(stderr, "pt: warning: %s\n", w.c_str());
     double loadSeconds = secondsSince(t0);
 
+    int hardware = tbb::info::default_concurrency();
+    int threads = args.threads > 0 ? std::min(args.threads, hardware) : hardware;
+    if (args.threads > hardware)
+        warnings.add("--threads " + std::to_string(args.threads) + ": this machine runs " + std::to_string(hardware) +
+                     " threads at once; using " + std::to_string(hardware));
+    if (!args.quiet)
+        for (const std::string& w : warnings.messages()) std::fprintf(err, "pt: warning: %s\n", w.c_str());
+
     size_t cameraIndex;
+    OutputFile output;
     try {
         cameraIndex = pickCamera(scene, args.camera);
+        std::vector<std::string> inputs = scene.sources;
+        for (const Texture& t : scene.textures) inputs.push_back(t.path);
+        std::string problem = outputIsInput({args.output, partial}, inputs);
+        // Created now, before any rendering: a folder that refuses it fails here, not in an hour.
+        if (problem.empty()) problem = output.open(args.output);
+        if (!problem.empty()) throw UsageError(problem);
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "pt render: %s\n", e.what());
+        std::fprintf(err, "pt render: %s\n", e.what());
         return 2;
     }
 
-    int threads = args.threads > 0 ? args.threads : tbb::this_task_arena::max_concurrency();
     auto t1 = std::chrono::steady_clock::now();
     std::unique_ptr<Accel> accel;
     try {
         tbb::task_arena arena(threads);
         arena.execute([&] { accel = std::make_unique<Accel>(scene, threads); });
     } catch (const LoadError& e) {
-        std::fprintf(stderr, "pt: error: %s\n", e.what());
+        std::fprintf(err, "pt: error: %s\n", e.what());
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(err, "pt: error: %s: out of memory while building the BVH of %zu triangles\n", args.scene.c_str(),
+                     scene.triangleCount());
         return 1;
     }
     double bvhSeconds = secondsSince(t1);
 
-    ProgressLine line(progress, !args.quiet && isatty(STDERR_FILENO));
-    RenderResult result = renderImage(scene, *accel, scene.cameras[cameraIndex], args.width, args.height,
-                                      uint32_t(args.spp), threads, args.settings, &progress,
-                                      args.aovAlbedo || args.aovNormal || args.aovDepth);
+    ProgressLine line(progress, uint32_t(args.spp), !args.quiet && isatty(STDERR_FILENO));
+    std::optional<RenderResult> rendered;
+    try {
+        rendered.emplace(renderImage(scene, *accel, scene.cameras[cameraIndex], args.width, args.height,
+                                     uint32_t(args.spp), threads, args.settings, &progress,
+                                     args.aovAlbedo || args.aovNormal || args.aovDepth));
+    } catch (const std::bad_alloc&) {
+        line.stop();
+        std::fprintf(err, "pt: error: out of memory for a %dx%d image; choose a smaller --res\n", args.width, args.height);
+        return 1;
+    }
     line.stop();
+    const RenderResult& result = *rendered;
 
     Image image;
     image.width = args.width;
@@ -313,36 +412,33 @@ int renderCommand(int argc, char** argv) {
     if (args.aovAlbedo) image.layers.push_back({"albedo", {"R", "G", "B"}, result.film.albedo()});
     if (args.aovNormal) image.layers.push_back({"normal", {"X", "Y", "Z"}, result.film.normal()});
     if (args.aovDepth) image.layers.push_back({"depth", {"Z"}, result.film.depth()});
-    auto meta = [&](const std::string& k, const std::string& v) { image.metadata.emplace_back(k, v); };
-    meta("Software", "pt " PT_VERSION);
-    meta("pt:version", PT_VERSION);
-    meta("pt:scene", args.scene);
-    meta("pt:camera", scene.cameras[cameraIndex].name);
-    meta("pt:spp", std::to_string(result.film.minSamples()));
-    meta("pt:seed", std::to_string(args.settings.seed));
-    meta("pt:maxDepth", std::to_string(args.settings.maxDepth));
-    meta("pt:renderSeconds", std::to_string(result.seconds));
-    meta("pt:clamp", std::to_string(args.settings.clamp));
+    addMetadata(image, args, scene, scene.cameras[cameraIndex].name, result, threads);
+    std::vector<unsigned char> bytes;
+
     if (result.cancelled) {
         // Never replace OUT with a partial image: the finished samples go beside it.
         int status = 128 + int(gSignal ? gSignal : SIGINT);
         uint32_t done = result.film.minSamples();
         if (done == 0) {
-            std::fprintf(stderr, "pt: interrupted before every pixel had a sample; nothing written\n");
+            std::fprintf(err, "pt: interrupted before every pixel had a sample; nothing written\n");
             return status;
         }
-        std::string partial = partialPath(args.output);
-        meta("pt:interrupted", "1");
-        std::string error = writeImage(partial, image);
-        if (!error.empty()) std::fprintf(stderr, "pt: error: %s\n", error.c_str());
+        image.metadata.push_back(ImageAttribute::integerValue("pt:interrupted", 1));
+        OutputFile partialFile;
+        std::string error = partialFile.open(partial);
+        if (error.empty()) error = encodeImage(formatFromPath(partial), image, bytes);
+        if (error.empty()) error = partialFile.commit(bytes.data(), bytes.size());
+        if (!error.empty()) std::fprintf(err, "pt: error: interrupted, and the partial image was lost: %s\n", error.c_str());
         else
-            std::fprintf(stderr, "pt: interrupted after %u of %lld spp; wrote them to %s (%s untouched)\n", done,
+            std::fprintf(err, "pt: interrupted after %u of %lld spp; wrote them to %s (%s untouched)\n", done,
                          args.spp, partial.c_str(), args.output.c_str());
         return status;
     }
-    std::string error = writeImage(args.output, image);
+    std::string error = encodeImage(formatFromPath(args.output), image, bytes);
+    if (!error.empty()) error = "writing \"" + args.output + "\" failed: " + error;
+    if (error.empty()) error = output.commit(bytes.data(), bytes.size());
     if (!error.empty()) {
-        std::fprintf(stderr, "pt: error: %s\n", error.c_str());
+        std::fprintf(err, "pt: error: %s\n", error.c_str());
         return 1;
     }
 

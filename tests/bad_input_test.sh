@@ -71,7 +71,7 @@ check nan_coordinate 1 'nan.obj:1: v: "nan" is not a finite number' $(render nan
 printf 'v 0 0 -inf\n' > inf.obj
 check inf_coordinate 1 'inf.obj:1: v: "-inf" is not a finite number' $(render inf.obj inf)
 printf 'v 0 0 1e39\n' > overflow.obj
-check overflow_coordinate 1 'overflow.obj:1: v: "1e39" is not a finite number' $(render overflow.obj overflow)
+check overflow_coordinate 1 'overflow.obj:1: v: "1e39" is beyond float'"'"'s range' $(render overflow.obj overflow)
 printf 'v 0 0 3e20\n' > huge.obj
 check huge_coordinate 1 "huge.obj:1: v: coordinate beyond +-1e12" $(render huge.obj huge)
 printf 'v 0 zero 0\n' > word.obj
@@ -123,9 +123,9 @@ printf 'mtllib camera.mtl\n%sv 2 0 0\nf 1 2 3\nf 1 2 3\nf 1 2 4\n' "$tri" > dege
 check degenerate_triangles 0 "1 of 3 triangles have zero area" render degenerate.obj -spp 2 --res 16x16 -o out/a.exr
 
 # Bad usage: refused before any work, nothing written.
-check spp_zero 2 "option --spp: 0 is out of range" render m.obj -spp 0 -o out/a.exr
-check spp_negative 2 "option --spp: -4 is out of range" render m.obj -spp -4 -o out/a.exr
-check spp_not_a_number 2 'option --spp: expected an integer, got "lots"' render m.obj -spp lots -o out/a.exr
+check spp_zero 2 "option -spp: 0 is out of range" render m.obj -spp 0 -o out/a.exr
+check spp_negative 2 "option -spp: -4 is out of range" render m.obj -spp -4 -o out/a.exr
+check spp_not_a_number 2 'option -spp: expected an integer, got "lots"' render m.obj -spp lots -o out/a.exr
 check resolution_too_large 2 "more than this machine's memory" render m.obj --res 60000x60000 -o out/a.exr
 check resolution_malformed 2 "option --res: expected WIDTHxHEIGHT" render m.obj --res 0x10 -o out/a.exr
 check unknown_extension 2 'unknown extension ".jpg"; expected .exr or .png' render m.obj -o out/a.jpg

@@ -17,7 +17,7 @@ TEST(ImageIo, ExrRoundTripsLayersAndMetadata) {
     img.height = 2;
     for (int i = 0; i < 18; ++i) img.rgb.push_back(0.1f * i);
     img.layers.push_back({"variance", {"R", "G", "B"}, std::vector<float>(18, 0.25f)});
-    img.metadata.emplace_back("pt:spp", "64");
+    img.metadata.push_back(ImageAttribute::integerValue("pt:spp", 64));
     ASSERT_EQ(writeImage(path, img), "");
     Image back;
     ASSERT_EQ(readImage(path, back), "");
@@ -27,7 +27,7 @@ TEST(ImageIo, ExrRoundTripsLayersAndMetadata) {
     EXPECT_EQ(back.layers[0].name, "variance");
     EXPECT_EQ(back.layers[0].pixels, img.layers[0].pixels);
     bool found = false;
-    for (auto& [k, v] : back.metadata) found |= k == "pt:spp" && v == "64";
+    for (auto& a : back.metadata) found |= a.name == "pt:spp" && a.type == ImageAttribute::Type::Int && a.integer == 64;
     EXPECT_TRUE(found);
 }
 

@@ -12,10 +12,11 @@ const ImageLayer* varianceLayer(const Image& image) {
 }
 
 double samplesPerPixel(const Image& image) {
-    for (const auto& [k, v] : image.metadata)
-        if (k == "pt:spp") {
-            try {
-                return std::stod(v);
+    for (const ImageAttribute& a : image.metadata)
+        if (a.name == "pt:spp") {
+            if (a.type == ImageAttribute::Type::Int) return double(a.integer);
+            try { // files written before pt:spp became an int
+                return std::stod(a.text);
             } catch (...) {
                 return 0.0;
             }

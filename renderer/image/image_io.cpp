@@ -1,7 +1,9 @@
 #include "image/image_io.h"
 
 #include "image/texture_io.h"
+#include "io/output_file.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -9,6 +11,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <cerrno>
+#include <cstring>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace pt {
@@ -31,31 +36,54 @@ ImageFormat formatFromPath(const std::string& path) {
 std::string checkOutputPath(const std::string& path) {
     if (formatFromPath(path) == ImageFormat::Unknown)
         return "output \"" + path + "\": unknown extension \"" + lowerExtension(path) + "\"; expected .exr or .png";
-    fs::path dir = fs::path(path).parent_path();
-    if (dir.empty()) dir = ".";
-    std::error_code ec;
-    if (!fs::is_directory(dir, ec)) return "output \"" + path + "\": folder \"" + dir.string() + "\" does not exist";
-    if (access(dir.c_str(), W_OK) != 0) return "output \"" + path + "\": folder \"" + dir.string() + "\" is not writable";
-    if (fs::is_directory(path, ec)) return "output \"" + path + "\" is a folder";
-    return "";
+    return checkOutputLocation(path);
 }
 
-static std::string writeTo(const std::string& path, const std::string& tmp, const Image& image) {
-    ImageFormat format = formatFromPath(path);
-    auto out = OIIO::ImageOutput::create(path); // the real name picks the format plugin
-    if (!out) return "cannot create a writer for \"" + path + "\": " + OIIO::geterror();
+std::string ImageAttribute::asText() const {
+    switch (type) {
+    case Type::Int: return std::to_string(integer);
+    case Type::Float: {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.9g", number);
+        return buf;
+    }
+    case Type::String: break;
+    }
+    return text;
+}
+
+static void addAttributes(OIIO::ImageSpec& spec, const Image& image) {
+    for (const ImageAttribute& a : image.metadata) {
+        switch (a.type) {
+        case ImageAttribute::Type::Int: spec.attribute(a.name, int(a.integer)); break;
+        case ImageAttribute::Type::Float: spec.attribute(a.name, float(a.number)); break;
+        case ImageAttribute::Type::String: spec.attribute(a.name, a.text); break;
+        }
+    }
+}
+
+std::string encodeImage(ImageFormat format, const Image& image, std::vector<unsigned char>& bytes) {
+    bytes.clear();
+    // The format plugin is picked by a name; the bytes go to memory, and only OutputFile touches
+    // the disk, checking every step (OpenImageIO's PNG writer does not report a full disk).
+    const char* name = format == ImageFormat::Png ? "image.png" : "image.exr";
+    auto out = OIIO::ImageOutput::create(name);
+    if (!out) return std::string("cannot create an image writer: ") + OIIO::geterror();
+    if (!out->supports("ioproxy")) return std::string("the ") + out->format_name() + " writer cannot write to memory";
+    OIIO::Filesystem::IOVecOutput proxy(bytes);
     size_t n = size_t(image.width) * image.height;
 
     if (format == ImageFormat::Png) {
         OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-        for (const auto& [k, v] : image.metadata) spec.attribute(k, v);
+        addAttributes(spec, image);
         std::vector<uint8_t> pixels(n * 3);
         for (size_t i = 0; i < n * 3; ++i) {
             float v = image.rgb[i];
             v = std::isfinite(v) ? std::clamp(linearToSrgb(std::max(v, 0.0f)), 0.0f, 1.0f) : 0.0f;
             pixels[i] = uint8_t(std::lround(v * 255.0f));
         }
-        if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::UINT8, pixels.data()) || !out->close())
+        if (!out->set_ioproxy(&proxy) || !out->open(name, spec) ||
+            !out->write_image(OIIO::TypeDesc::UINT8, pixels.data()) || !out->close())
             return out->geterror();
         return "";
     }
@@ -68,7 +96,7 @@ static std::string writeTo(const std::string& path, const std::string& tmp, cons
     OIIO::ImageSpec spec(image.width, image.height, nc, OIIO::TypeDesc::FLOAT);
     spec.channelnames = names;
     spec.attribute("compression", "zip");
-    for (const auto& [k, v] : image.metadata) spec.attribute(k, v);
+    addAttributes(spec, image);
     std::vector<float> pixels(n * nc);
     for (size_t i = 0; i < n; ++i) {
         float* p = &pixels[i * nc];
@@ -79,7 +107,8 @@ static std::string writeTo(const std::string& path, const std::string& tmp, cons
             for (size_t c = 0; c < lc; ++c) p[k++] = layer.pixels[i * lc + c];
         }
     }
-    if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) || !out->close())
+    if (!out->set_ioproxy(&proxy) || !out->open(name, spec) ||
+        !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) || !out->close())
         return out->geterror();
     return "";
 }
@@ -87,36 +116,50 @@ static std::string writeTo(const std::string& path, const std::string& tmp, cons
 std::string writeImage(const std::string& path, const Image& image) {
     std::string check = checkOutputPath(path);
     if (!check.empty()) return check;
-    fs::path p(path);
-    std::string tmp = (p.parent_path() / ("." + p.stem().string() + ".tmp-" + std::to_string(getpid()) +
-                                          p.extension().string())).string();
-    std::string error = writeTo(path, tmp, image);
-    if (error.empty()) {
-        std::error_code ec;
-        fs::rename(tmp, path, ec);
-        if (ec) error = "cannot rename \"" + tmp + "\" to \"" + path + "\": " + ec.message();
-    }
-    if (!error.empty()) {
-        std::error_code ignored;
-        fs::remove(tmp, ignored);
-        return "writing \"" + path + "\" failed: " + error;
-    }
-    return "";
+    OutputFile file;
+    std::string error = file.open(path);
+    if (!error.empty()) return error;
+    std::vector<unsigned char> bytes;
+    error = encodeImage(formatFromPath(path), image, bytes);
+    if (!error.empty()) return "writing \"" + path + "\" failed: " + error;
+    return file.commit(bytes.data(), bytes.size());
 }
 
 std::string readImage(const std::string& path, Image& image) {
+    struct stat st {};
+    if (stat(path.c_str(), &st) != 0) return "cannot read \"" + path + "\": " + std::strerror(errno);
+    if (S_ISDIR(st.st_mode)) return "cannot read \"" + path + "\": it is a folder, not an image";
+    if (!S_ISREG(st.st_mode)) return "cannot read \"" + path + "\": not a regular file (a device or pipe?)";
     auto in = OIIO::ImageInput::open(path);
     if (!in) return "cannot read \"" + path + "\": " + OIIO::geterror();
-    const OIIO::ImageSpec& spec = in->spec();
+    const OIIO::ImageSpec spec = in->spec();
     int w = spec.width, h = spec.height, nc = spec.nchannels;
     if (w <= 0 || h <= 0 || nc <= 0) return "\"" + path + "\": empty image";
-    std::vector<float> pixels(size_t(w) * h * nc);
+    // The file's pixels as float, then their copy into rgb and the layers: twice the bytes.
+    double bytes = 2.0 * double(w) * double(h) * double(nc) * sizeof(float);
+    double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    if (physical > 0 && bytes > 0.5 * physical)
+        return "\"" + path + "\": its header declares " + std::to_string(w) + "x" + std::to_string(h) + " pixels of " +
+               std::to_string(nc) + " channels, about " + std::to_string(int(bytes / 1e9 + 0.5)) +
+               " GB to read, more than half this machine's memory";
+    int parts = 1;
+    while (parts < 1000 && in->seek_subimage(parts, 0)) ++parts;
+    if (!in->seek_subimage(0, 0)) return "cannot read \"" + path + "\": " + in->geterror();
+    std::vector<float> pixels;
+    try {
+        pixels.resize(size_t(w) * h * nc);
+    } catch (const std::bad_alloc&) {
+        return "\"" + path + "\": out of memory for its " + std::to_string(w) + "x" + std::to_string(h) + " pixels";
+    }
     if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, pixels.data()))
         return "cannot read \"" + path + "\": " + in->geterror();
 
     image = Image{};
     image.width = w;
     image.height = h;
+    image.parts = parts;
+    for (int c = 0; c < nc; ++c)
+        image.channelNames.push_back(c < int(spec.channelnames.size()) ? spec.channelnames[c] : "channel" + std::to_string(c));
     size_t n = size_t(w) * h;
     int rgbIndex[3] = {-1, -1, -1};
     std::map<std::string, std::vector<std::pair<std::string, int>>> layerChannels;
@@ -156,7 +199,9 @@ std::string readImage(const std::string& path, Image& image) {
         image.layers.push_back(std::move(layer));
     }
     for (const auto& attr : spec.extra_attribs)
-        image.metadata.emplace_back(attr.name().string(), attr.get_string());
+        if (attr.type() == OIIO::TypeDesc::INT) image.metadata.push_back(ImageAttribute::integerValue(attr.name().string(), attr.get_int()));
+        else if (attr.type() == OIIO::TypeDesc::FLOAT) image.metadata.push_back(ImageAttribute::floatValue(attr.name().string(), attr.get_float()));
+        else image.metadata.push_back(ImageAttribute::string(attr.name().string(), attr.get_string()));
     return "";
 }
 

@@ -14,26 +14,49 @@ struct ImageLayer {
     std::vector<float> pixels;          // interleaved, channels.size() values per pixel
 };
 
+// One metadata attribute, written with its type (EXR keeps ints, floats and strings apart).
+struct ImageAttribute {
+    enum class Type { String, Int, Float };
+    std::string name;
+    Type type = Type::String;
+    std::string text;
+    long long integer = 0;
+    double number = 0.0;
+
+    static ImageAttribute string(std::string n, std::string v) { return {std::move(n), Type::String, std::move(v)}; }
+    static ImageAttribute integerValue(std::string n, long long v) { return {std::move(n), Type::Int, {}, v}; }
+    static ImageAttribute floatValue(std::string n, double v) { return {std::move(n), Type::Float, {}, 0, v}; }
+    std::string asText() const; // the value, whatever its type, for messages and lookups
+};
+
 struct Image {
     int width = 0, height = 0;
     std::vector<float> rgb; // interleaved linear RGB, row 0 at the top
     std::vector<ImageLayer> layers;
-    std::vector<std::pair<std::string, std::string>> metadata; // written as string attributes
+    std::vector<ImageAttribute> metadata;
+    std::vector<std::string> channelNames; // as read from a file, in its order (readImage only)
+    int parts = 1;                         // subimages in the file read (multipart EXR)
 };
 
 enum class ImageFormat { Exr, Png, Unknown };
 ImageFormat formatFromPath(const std::string& path);
 
-// Checks before rendering that `path` can be written: a known extension and a folder that
-// exists and is writable. Returns an empty string or the reason it cannot.
+// Checks before rendering that `path` can be written: a known extension, and a folder that
+// exists and is writable (io/output_file.h). Returns an empty string or the reason it cannot.
 std::string checkOutputPath(const std::string& path);
 
-// Writes to a temporary file beside `path` and renames it into place, so a failed write never
+// Encodes the image in the format of `format` into memory. Returns "" or the error.
+std::string encodeImage(ImageFormat format, const Image& image, std::vector<unsigned char>& bytes);
+
+// Encodes the image and writes it through an OutputFile (io/output_file.h): a failed write never
 // leaves a truncated file or replaces a good one. Returns an empty string or the error.
 std::string writeImage(const std::string& path, const Image& image);
 
 // Reads an image (any format OpenImageIO knows) into `image`: R, G, B into rgb (grey replicated)
-// and other channels grouped into layers by their "prefix." name. Returns "" or the error.
+// and other channels grouped into layers by their "prefix." name; of a multipart EXR, the first
+// part. Refuses what is not a regular file (a FIFO or /dev/zero would block or never end) and an
+// image whose header declares more pixels than half this machine's memory holds, before reading
+// them. Returns "" or the error.
 std::string readImage(const std::string& path, Image& image);
 
 } // namespace pt

@@ -3,7 +3,9 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <unistd.h>
 
 namespace pt {
 
@@ -15,7 +17,13 @@ float linearToSrgb(float c) {
     return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
-bool readTexture(const std::string& path, Texture& texture, std::string& error) {
+double textureMemoryBudget() {
+    double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    return physical > 0 ? 0.25 * physical : 4e9;
+}
+
+bool readTexture(const std::string& path, Texture& texture, std::string& error, double budgetBytes, bool& tooLarge) {
+    tooLarge = false;
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) { // a pipe or device could block forever
         error = "texture \"" + path + "\" " + (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found");
@@ -26,27 +34,47 @@ bool readTexture(const std::string& path, Texture& texture, std::string& error) 
         error = "cannot read texture \"" + path + "\": " + OIIO::geterror();
         return false;
     }
-    const OIIO::ImageSpec& spec = in->spec();
+    const OIIO::ImageSpec spec = in->spec();
     int w = spec.width, h = spec.height, nc = spec.nchannels;
-    if (w <= 0 || h <= 0 || nc <= 0 || size_t(w) * size_t(h) > (size_t(1) << 28)) {
+    if (w <= 0 || h <= 0 || nc <= 0) {
         error = "texture \"" + path + "\" has an unusable size " + std::to_string(w) + "x" + std::to_string(h);
         return false;
     }
-    std::vector<float> pixels(size_t(w) * h * nc);
-    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, pixels.data())) {
-        error = "cannot read texture \"" + path + "\": " + in->geterror();
+    // RGB float texels, plus one float channel while a grey image is expanded.
+    double bytes = double(w) * double(h) * (sizeof(Spectrum) + (nc < 3 ? sizeof(float) : 0));
+    if (bytes > budgetBytes) {
+        tooLarge = true;
+        char what[160];
+        std::snprintf(what, sizeof what, "%dx%d, %.1f GB as float texels, beyond the %.1f GB left for textures "
+                      "(a quarter of this machine's memory)", w, h, bytes / 1e9, std::max(0.0, budgetBytes) / 1e9);
+        error = "texture \"" + path + "\" is too large: " + what;
+        return false;
+    }
+    try {
+        texture.texels.assign(size_t(w) * h, Spectrum(0.0f));
+        std::vector<float> grey(nc < 3 ? size_t(w) * h : 0);
+        // RGB straight into the texels (alpha and further channels are not read).
+        bool ok = nc >= 3 ? in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, texture.texels.data())
+                          : in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, grey.data());
+        if (!ok) {
+            error = "cannot read texture \"" + path + "\": " + in->geterror();
+            texture.texels.clear();
+            return false;
+        }
+        for (size_t i = 0; i < grey.size(); ++i) texture.texels[i] = Spectrum(grey[i]);
+    } catch (const std::bad_alloc&) {
+        tooLarge = true;
+        error = "texture \"" + path + "\": out of memory for its " + std::to_string(w) + "x" + std::to_string(h) + " texels";
+        texture.texels.clear();
         return false;
     }
     bool isLinear = spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF;
     texture.path = path;
     texture.width = w;
     texture.height = h;
-    texture.texels.resize(size_t(w) * h);
-    for (size_t i = 0; i < texture.texels.size(); ++i) {
-        const float* p = &pixels[i * nc];
-        Spectrum c = nc >= 3 ? Spectrum(p[0], p[1], p[2]) : Spectrum(p[0]);
+    for (Spectrum& c : texture.texels) {
         if (!isLinear) c = Spectrum(srgbToLinear(c.x), srgbToLinear(c.y), srgbToLinear(c.z));
-        texture.texels[i] = isFinite(c) ? glm::max(c, Spectrum(0.0f)) : Spectrum(0.0f);
+        c = isFinite(c) ? glm::max(c, Spectrum(0.0f)) : Spectrum(0.0f);
     }
     return true;
 }

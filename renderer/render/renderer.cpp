@@ -89,6 +89,7 @@ RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& c
             uint32_t last = std::min(spp, first + std::clamp(first, 1u, maxPass));
             result.rays += renderer.renderSamples(result.film, first, last, progress);
             first = last;
+            if (progress && !progress->cancel.load()) progress->samplesComplete.store(last);
         }
         if (progress && progress->cancel.load()) result.cancelled = true;
     });

@@ -20,6 +20,7 @@ struct RenderProgress {
     std::atomic<uint64_t> done{0};
     uint64_t total = 0;
     std::atomic<bool> cancel{false};
+    std::atomic<uint32_t> samplesComplete{0}; // samples every pixel holds, after each full pass
 };
 
 class Renderer {

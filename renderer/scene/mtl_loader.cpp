@@ -107,7 +107,12 @@ int MtlParser::loadTexture(std::string_view spec, std::string_view keyword, cons
         if (scene.textures[i].path == full.string()) return int(i);
     std::string error;
     Texture tex;
-    if (!readTexture(full.string(), tex, error)) {
+    double used = 0.0;
+    for (const Texture& t : scene.textures) used += double(t.texels.size()) * sizeof(Spectrum);
+    bool tooLarge = false;
+    if (!readTexture(full.string(), tex, error, textureMemoryBudget() - used, tooLarge)) {
+        // Too large is an error: a render without the texture would be a silently different image.
+        if (tooLarge) throw LoadError(where + std::string(keyword) + ": " + error);
         warnings.add(where + std::string(keyword) + ": " + error + "; using the plain colour instead");
         return -1;
     }
@@ -315,6 +320,7 @@ void parseMtl(std::string_view text, const std::string& path, Scene& scene,
 void loadMtl(const std::string& path, Scene& scene,
              std::unordered_map<std::string, uint32_t>& materialIndex, Warnings& warnings) {
     std::string text = readTextFile(path);
+    scene.sources.push_back(path);
     parseMtl(text, path, scene, materialIndex, warnings);
 }
 

@@ -179,6 +179,7 @@ void ObjParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
 Scene parseObj(std::string_view text, const std::string& path, Warnings& warnings) {
     ObjParser parser(path, warnings);
     parser.scene.path = path;
+    parser.scene.sources.push_back(path);
     LineReader lines(text, path);
     std::string_view line;
     while (lines.next(line)) {

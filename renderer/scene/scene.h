@@ -70,6 +70,7 @@ struct Environment {
 
 struct Scene {
     std::string path; // file it was loaded from, for messages and metadata
+    std::vector<std::string> sources; // every file read: the scene and its MTLs (textures: Texture::path)
 
     // Geometry. Each triangle corner has its own position, normal and uv index, as in OBJ.
     std::vector<Vec3> positions;

@@ -4,12 +4,22 @@
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace pt {
+
+// 1-based line of byte `offset`, counting LF, CR and CRLF each as one line break.
+static size_t lineOfOffset(std::string_view text, size_t offset) {
+    size_t line = 1;
+    for (size_t i = 0; i < offset && i < text.size(); ++i)
+        if (text[i] == '\n' || (text[i] == '\r' && (i + 1 >= text.size() || text[i + 1] != '\n'))) ++line;
+    return line;
+}
 
 std::string readTextFile(const std::string& path) {
     struct stat st {};
@@ -19,28 +29,43 @@ std::string readTextFile(const std::string& path) {
     if (!S_ISREG(st.st_mode)) throw LoadError(path + ": is not a regular file (a device or pipe?)");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw LoadError(path + ": cannot open: " + std::strerror(errno));
+    // Binary content shows in the first block: refuse it before reading (and allocating) the
+    // whole file, which for a 2 GB sparse file of zeros would take seconds and gigabytes.
+    std::string head(size_t(std::min<off_t>(st.st_size, 65536)), '\0');
+    in.read(head.data(), std::streamsize(head.size()));
+    if (size_t(in.gcount()) != head.size()) throw LoadError(path + ": read failed");
+    if (size_t nul = head.find('\0'); nul != std::string::npos)
+        throw LoadError(path, lineOfOffset(head, nul), "contains a NUL byte; expected a text file, not binary data");
+    double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    if (physical > 0 && double(st.st_size) > 0.5 * physical)
+        throw LoadError(path + ": is " + std::to_string(int(double(st.st_size) / 1e9 + 0.5)) +
+                        " GB, more than half this machine's memory; a scene text file must fit in memory");
     std::string text;
-    text.resize(size_t(st.st_size));
-    in.read(text.data(), std::streamsize(text.size()));
-    if (size_t(in.gcount()) != text.size()) throw LoadError(path + ": read failed");
+    try {
+        text.resize(size_t(st.st_size));
+    } catch (const std::bad_alloc&) {
+        throw LoadError(path + ": out of memory reading its " + std::to_string(st.st_size) + " bytes");
+    }
+    std::memcpy(text.data(), head.data(), head.size());
+    in.read(text.data() + head.size(), std::streamsize(text.size() - head.size()));
+    if (size_t(in.gcount()) != text.size() - head.size()) throw LoadError(path + ": read failed");
     return text;
 }
 
 LineReader::LineReader(std::string_view text, const std::string& file) : text_(text), file_(file) {
     size_t nul = text.find('\0');
-    if (nul != std::string_view::npos) {
-        size_t line = 1 + size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(nul), '\n'));
-        throw LoadError(file_, line, "contains a NUL byte; expected a text file, not binary data");
-    }
+    if (nul != std::string_view::npos)
+        throw LoadError(file_, lineOfOffset(text, nul), "contains a NUL byte; expected a text file, not binary data");
+    if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3; // a UTF-8 byte-order mark is not part of line 1
 }
 
 bool LineReader::next(std::string_view& line) {
     if (pos_ >= text_.size()) return false;
-    size_t end = text_.find('\n', pos_);
+    size_t end = text_.find_first_of("\r\n", pos_); // LF, CRLF and CR (old Mac) all end a line
     if (end == std::string_view::npos) end = text_.size();
     line = text_.substr(pos_, end - pos_);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     pos_ = end + 1;
+    if (end + 1 < text_.size() && text_[end] == '\r' && text_[end + 1] == '\n') ++pos_;
     ++line_;
     return true;
 }
@@ -95,8 +120,17 @@ float Tokens::number(std::string_view what) {
     if (digits.front() == '+') digits.remove_prefix(1); // from_chars rejects a leading '+'
     float value = 0.0f;
     auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (ec == std::errc::result_out_of_range || (ec == std::errc() && !std::isfinite(value)))
-        fail(std::string(what) + ": " + quoted(w) + " is not a finite number");
+    if (ec == std::errc::result_out_of_range && ptr == digits.data() + digits.size()) {
+        // Out of float's range: an underflow (1e-320) is a number, zero in float; an overflow is not.
+        double d = std::strtod(std::string(digits.substr(0, 400)).c_str(), nullptr);
+        if (std::abs(d) < 1.0) {
+            value = float(d);
+            ec = std::errc();
+        } else {
+            fail(std::string(what) + ": " + quoted(w) + " is beyond float's range (+-3.4e38)");
+        }
+    }
+    if (ec == std::errc() && !std::isfinite(value)) fail(std::string(what) + ": " + quoted(w) + " is not a finite number");
     if (ec != std::errc() || ptr != digits.data() + digits.size())
         fail(std::string(what) + ": expected a number, found " + quoted(w));
     return value;

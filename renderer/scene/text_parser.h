@@ -12,10 +12,12 @@
 namespace pt {
 
 // Reads a whole regular file into memory, or throws a LoadError saying why it could not
-// (missing, a folder, a device or pipe that could block or never end).
+// (missing, a folder, a device or pipe that could block or never end, binary content in its
+// first 64 KiB, more than half the machine's memory, an allocation that fails).
 std::string readTextFile(const std::string& path);
 
-// Splits a buffer into lines; accepts "\n" and "\r\n" endings and a missing final newline.
+// Splits a buffer into lines: LF, CRLF and CR each end a line, a final newline may be missing, and
+// a UTF-8 byte-order mark at the start is skipped.
 class LineReader {
 public:
     // Throws a LoadError naming the line of the first NUL byte: binary files are rejected before
