@@ -262,10 +262,16 @@ void installStopHandlers(std::atomic<bool>& cancel) {
     }
 }
 
-// out.exr -> out.partial.exr: where an interrupted render puts what it finished.
+// out.exr -> out.partial.exr: where an interrupted render puts what it finished. A name that
+// would then be too long for the file system loses the end of its stem instead.
 std::string partialPath(const std::string& output) {
     std::filesystem::path p(output);
-    return (p.parent_path() / (p.stem().string() + ".partial" + p.extension().string())).string();
+    std::string stem = p.stem().string(), tail = ".partial" + p.extension().string();
+    std::string dir = p.parent_path().empty() ? "." : p.parent_path().string();
+    long nameMax = pathconf(dir.c_str(), _PC_NAME_MAX);
+    if (nameMax <= 0) nameMax = 255;
+    if (long(stem.size() + tail.size()) > nameMax) stem.resize(size_t(std::max(1L, nameMax - long(tail.size()))));
+    return (p.parent_path() / (stem + tail)).string();
 }
 
 double secondsSince(std::chrono::steady_clock::time_point t) {

@@ -122,6 +122,74 @@ check number_of_10MB 1 'long_number.obj:1: v: "33333333333333333333' $(render lo
 printf 'mtllib camera.mtl\n%sv 2 0 0\nf 1 2 3\nf 1 2 3\nf 1 2 4\n' "$tri" > degenerate.obj
 check degenerate_triangles 0 "1 of 3 triangles have zero area" render degenerate.obj -spp 2 --res 16x16 -o out/a.exr
 
+# Byte-order marks and old Mac line endings: accepted in OBJ and MTL, with the right line numbers.
+printf '\xEF\xBB\xBFmtllib camera.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > bom.obj
+check utf8_bom 0 "16x16, 2 spp" render bom.obj -spp 2 --res 16x16 -o out/a.exr
+printf '\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nf 1 2 3\n' > bom_bad.obj
+check utf8_bom_line_numbers 1 "bom_bad.obj:3: f: vertex index 3 is out of range" $(render bom_bad.obj bom)
+printf 'mtllib cr.mtl\rv 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r' > cr.obj
+printf '\xEF\xBB\xBFnewcamera C\rcameraposition 0.3 0.3 3\rcameratarget 0.3 0.3 0\r' > cr.mtl
+got=$("$pt" render cr.obj -spp 2 --res 16x16 -o cr.exr 2>&1)
+[[ $? -eq 0 && "$got" != *warning* ]] || fail "cr_line_endings: $got"
+tr '\r' '\n' < cr.obj > lf.obj && tr '\r' '\n' < cr.mtl | sed 's/cr.mtl/lf.mtl/' > lf.mtl && sed -i 's/cr.mtl/lf.mtl/' lf.obj
+"$pt" render lf.obj -spp 2 --res 16x16 -q -o lf.exr > /dev/null
+oiiotool --diff cr.exr lf.exr > /dev/null || fail "cr_line_endings: the image differs from the same scene with LF endings"
+printf 'v 0 0 0\rv 1 0 0\rf 1 2 4\r' > cr_bad.obj
+check cr_line_numbers 1 "cr_bad.obj:3: f: vertex index 4 is out of range" $(render cr_bad.obj crb)
+printf 'mtllib camera.mtl\nv 1e-320 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > denormal.obj
+check denormal_is_a_number 0 "16x16, 2 spp" render denormal.obj -spp 2 --res 16x16 -o out/a.exr
+
+# Input far larger than a scene: refused at once, from the first block or the header.
+truncate -s 2G sparse.mtl
+printf 'mtllib sparse.mtl\n%sf 1 2 3\n' "$tri" > sparse.obj
+start=$(date +%s%N)
+check sparse_2GB_mtl 1 "sparse.mtl:1: contains a NUL byte" $(render sparse.obj sparse)
+(( ($(date +%s%N) - start) / 1000000 < 3000 )) || fail "sparse_2GB_mtl: took more than 3 s to refuse"
+truncate -s 8G sparse.mtl
+check sparse_8GB_mtl 1 "sparse.mtl:1: contains a NUL byte" $(render sparse.obj sparse8)
+rm -f sparse.mtl
+# A PNG whose header declares 65536 x 65536 (51 GB as texels) and holds no pixels.
+/usr/bin/python3 -c "
+import struct, zlib
+def chunk(t, d): return struct.pack('>I', len(d)) + t + d + struct.pack('>I', zlib.crc32(t + d))
+open('huge.png', 'wb').write(b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', 65536, 65536, 8, 2, 0, 0, 0))
+                             + chunk(b'IDAT', zlib.compress(b'')) + chunk(b'IEND', b''))"
+printf 'newmtl T\nmap_Kd huge.png\n' > huge_tex.mtl
+printf 'mtllib huge_tex.mtl\n%susemtl T\nf 1 2 3\n' "$tri" > huge_tex.obj
+check texture_beyond_budget 1 'huge_tex.mtl:2: map_Kd: texture "huge.png" is too large: 65536x65536' $(render huge_tex.obj ht)
+
+# Values that would overflow float somewhere in the renderer: refused at their line.
+light() { printf 'newlight L\nlightposition 0.3 0.3 1\n%s\n' "$1" > light.mtl; printf 'mtllib camera.mtl\nmtllib light.mtl\n%sf 1 2 3\n' "$tri" > light.obj; }
+light 'lightintensity 1e38'
+check point_light_1e38 1 'light.mtl:3: light "L": lightintensity 1e+38 of a point light' $(render light.obj l1)
+light 'lightintensity 5e20'
+check point_light_5e20 1 'light.mtl:3: light "L": lightintensity 5e+20 of a point light' $(render light.obj l2)
+light $'lightradius 1e20\nlightintensity 1'
+check light_radius_1e20 1 'light.mtl:3: lightradius: beyond 1e12' $(render light.obj l3)
+light $'lightradius 1e-20\nlightintensity 1'
+check light_radius_1e-20 1 'light.mtl:4: light "L": lightintensity 1 on a sphere of radius 1e-20 emits radiance inf' $(render light.obj l4)
+light $'lightradius 1e-14\nlightintensity 1e-20'
+check light_radius_below_scene_fraction 1 'light.mtl:3: light "L": lightradius 1e-14 is below 1e-12 of the scene' $(render light.obj l5)
+light $'lightradius 0.1\nlightintensity 1e3'
+check legal_light_renders 0 "16x16, 2 spp" render light.obj -spp 2 --res 16x16 -o out/a.exr
+printf 'newmtl Hot\nKe 1e19 1 1\n' > hot.mtl
+printf 'mtllib hot.mtl\n%susemtl Hot\nf 1 2 3\n' "$tri" > hot.obj
+check emission_beyond_1e18 1 'hot.mtl:2: Ke: radiance 1e+19 is beyond the 1e18' $(render hot.obj hot)
+printf 'newmtl Bright\nKd 1.5 0.5 0.5\nKd 1.2 0.5 0.5\n' > bright.mtl
+printf 'mtllib camera.mtl\nmtllib bright.mtl\n%susemtl Bright\nf 1 2 3\n' "$tri" > bright.obj
+check kd_above_one_warns 0 'bright.mtl:2: Kd above 1 in material "Bright" creates energy' render bright.obj -spp 2 --res 16x16 -o out/a.exr
+[[ $("$pt" render bright.obj -spp 1 --res 8x8 -o bright.exr 2>&1 | grep -c "creates energy") -eq 1 ]] || fail "kd_above_one_warns: not once"
+printf 'mtllib camera.mtl\n%sv -1e17 -1e17 -5\nv 1e17 -1e17 -5\nv 0 1e17 -5\nf 1 2 3\nf 4 5 6\n' "$tri" > backdrop.obj
+check backdrop_at_1e17 1 "backdrop.obj:5: v: coordinate beyond +-1e12" $(render backdrop.obj bd)
+printf 'mtllib camera.mtl\nv 0 0 0\nv 1e-7 0 0\nv 0 1e-7 0\nf 1 2 3\n' > tiny.obj
+check scene_below_1e-6 1 "tiny.obj: the scene's triangles span only 1.41421e-07 across" $(render tiny.obj tiny)
+printf 'newcamera OnlyFov\ncamerafov 30\n' > fov.mtl
+printf 'mtllib fov.mtl\n%sf 1 2 3\n' "$tri" > fov.obj
+check camera_without_position_warns 0 'fov.mtl:1: camera "OnlyFov" has neither cameraposition nor cameratarget' render fov.obj -spp 1 --res 8x8 -o out/a.exr
+printf 'newcamera C\ncameraposition 0 0 1\ncameraup 0 0 0\ncamerafov 45\n' > up.mtl
+printf 'mtllib up.mtl\n%sf 1 2 3\n' "$tri" > up.obj
+check camera_error_names_its_keyword 1 'up.mtl:3: camera "C": cameraup is zero' $(render up.obj up)
+
 # Bad usage: refused before any work, nothing written.
 check spp_zero 2 "option -spp: 0 is out of range" render m.obj -spp 0 -o out/a.exr
 check spp_negative 2 "option -spp: -4 is out of range" render m.obj -spp -4 -o out/a.exr
@@ -131,6 +199,24 @@ check resolution_malformed 2 "option --res: expected WIDTHxHEIGHT" render m.obj 
 check unknown_extension 2 'unknown extension ".jpg"; expected .exr or .png' render m.obj -o out/a.jpg
 check missing_folder 2 'folder "out/no/such" does not exist' render m.obj -o out/no/such/a.exr
 check clamp_negative 2 "option --clamp: -1 is out of range" render m.obj --clamp -1 -o out/a.exr
+check res_negative 2 'option --res: expected WIDTHxHEIGHT with two positive sizes such as 512x512, got "-64x64"' render m.obj --res -64x64 -o out/a.exr
+check clamp_range_is_short 2 "option --clamp: 1e40 is out of range [0, 1e+30]" render m.obj --clamp 1e40 -o out/a.exr
+check seed_range 2 "option --seed: 4294967296 is out of range [0, 2147483647]" render m.obj --seed 4294967296 -o out/a.exr
+check value_missing_names_the_option 2 "option -o needs a value" render m.obj -o
+check double_dash_ends_options 0 "8x8, 1 spp" render -spp 1 --res 8x8 -o out/a.exr -- m.obj
+cp m.obj ./-dash.obj
+check dash_named_scene 0 "8x8, 1 spp" render -spp 1 --res 8x8 -o out/a.exr -- -dash.obj
+check threads_beyond_cores 0 "this machine runs $(nproc) threads at once; using $(nproc)" render m.obj --threads 4096 -spp 1 --res 8x8 -o out/a.exr
+"$pt" render m.obj --threads 4096 -spp 1 --res 8x8 -o threads.exr > /dev/null 2>&1
+oiiotool --info -v threads.exr | grep -q "pt:threads: $(nproc)$" || fail "threads_beyond_cores: pt:threads is not $(nproc)"
+oiiotool --info -v threads.exr | grep -q "pt:threadsRequested: 4096" || fail "threads_beyond_cores: pt:threadsRequested is not recorded"
+mkdir -p out
+got=$(TBB_VERSION=1 "$pt" render fov.obj -q -spp 1 --res 8x8 -o out/a.exr 2>&1 >/dev/null)
+[[ -z "$got" ]] || fail "quiet: libraries or warnings still print: $(echo "$got" | head -2)"
+got=$("$pt" render missing.obj -q -o out/a.exr 2>&1)
+[[ "$got" == *"missing.obj: cannot open"* ]] || fail "quiet: errors must still print: $got"
+rm -rf out
+check alpha_range_is_short 2 "option --alpha: 0.9 is out of range [1e-12, 0.5]" diff a.exr b.exr --alpha 0.9
 mkdir locked && chmod 555 locked
 if [[ $(id -u) -eq 0 ]]; then # root writes anywhere: run this one case as nobody
   chmod 755 "$tmp"

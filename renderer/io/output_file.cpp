@@ -106,7 +106,8 @@ std::string OutputFile::open(const std::string& path) {
     temp_ = (fs::path(dir) / tempName).string();
 
     struct stat old {};
-    mode_t mode = stat(target_.c_str(), &old) == 0 ? (old.st_mode & 07777) : 0666;
+    existed_ = stat(target_.c_str(), &old) == 0;
+    mode_t mode = existed_ ? (old.st_mode & 07777) : 0666;
     slot_ = registerTemp(temp_); // before the file exists, so a signal can never miss it
     fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd_ < 0) {
@@ -128,7 +129,8 @@ std::string OutputFile::commit(const void* data, size_t size) {
     auto failed = [&](const std::string& step) {
         std::string why = errnoText();
         discard();
-        return "writing \"" + path_ + "\" failed (" + step + ": " + why + "); the file is unchanged";
+        return "writing \"" + path_ + "\" failed (" + step + ": " + why + "); " +
+               (existed_ ? "the existing file is unchanged" : "no file was left");
     };
     const char* p = static_cast<const char*>(data);
     while (size > 0) {

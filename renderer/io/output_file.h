@@ -36,6 +36,7 @@ private:
 
     std::string path_, target_, temp_;
     int fd_ = -1;
+    bool existed_ = false; // the target existed when opened
     int slot_ = -1; // in the registry of temporary files a second signal removes
 };
 
