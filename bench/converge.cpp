@@ -6,6 +6,7 @@
 #include "accel/accel.h"
 #include "bench/bench_common.h"
 #include "image/image_io.h"
+#include "io/output_file.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 
@@ -13,7 +14,7 @@
 
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
 namespace pt::bench {
 namespace {
@@ -131,7 +132,7 @@ int runConverge(int argc, char** argv) {
     }
 
     std::string csvPath = o.outDir + "/converge_" + o.name + ".csv";
-    std::ofstream csv(csvPath);
+    std::ostringstream csv;
     csv << "method,spp,seconds,rel_mse,renders\n"; // seconds and rel_mse: means over the renders
     for (const Method& m : methods()) {
         std::printf("  %-44s", m.name);
@@ -156,6 +157,11 @@ int runConverge(int argc, char** argv) {
             if (seconds > 0.5 * o.budget || spp >= o.referenceSpp / 8) break;
         }
         std::printf("\n");
+    }
+    std::string error = writeWholeFile(csvPath, csv.str());
+    if (!error.empty()) {
+        std::fprintf(stderr, "converge: %s\n", error.c_str());
+        return 1;
     }
     std::printf("wrote %s\n", csvPath.c_str());
     return 0;

@@ -4,6 +4,7 @@
 // `pt-bench converge` runs the convergence study instead (bench/converge.cpp).
 #include "accel/accel.h"
 #include "bench/bench_common.h"
+#include "io/output_file.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 
@@ -21,7 +22,6 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -256,7 +256,11 @@ int runBench(const Options& o) {
             list += (i ? ", " : "") + std::string("{\"threads\": ") + std::to_string(scaling[i].first) +
                     ", \"seconds_per_frame\": " + std::to_string(scaling[i].second) + "}";
         j.raw("scaling", list + "]");
-        std::ofstream(o.json) << j.str();
+        std::string error = writeWholeFile(o.json, j.str());
+        if (!error.empty()) {
+            std::fprintf(stderr, "pt-bench: %s\n", error.c_str());
+            return 1;
+        }
         std::printf("\n  wrote %s\n", o.json.c_str());
     }
     return 0;

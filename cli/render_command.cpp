@@ -448,6 +448,8 @@ int renderCommand(int argc, char** argv) {
         return 1;
     }
 
+    if (gSignal != 0)
+        std::fprintf(err, "pt: the signal came after the last sample; the whole image was written\n");
     const RayCounts& r = result.rays;
     std::string clampNote =
         args.settings.clamp > 0.0f ? ", " + std::to_string(r.clamped) + " clamped (--clamp biases the image)" : "";

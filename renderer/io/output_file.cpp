@@ -165,4 +165,10 @@ void OutputFile::discard() {
 
 OutputFile::~OutputFile() { discard(); }
 
+std::string writeWholeFile(const std::string& path, const std::string& bytes) {
+    OutputFile file;
+    std::string error = file.open(path);
+    return error.empty() ? file.commit(bytes.data(), bytes.size()) : error;
+}
+
 } // namespace pt

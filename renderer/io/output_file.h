@@ -40,6 +40,9 @@ private:
     int slot_ = -1; // in the registry of temporary files a second signal removes
 };
 
+// open() and commit() in one step, for outputs that need no early check. Returns "" or the error.
+std::string writeWholeFile(const std::string& path, const std::string& bytes);
+
 // Checks that `path` could be an output without creating anything: its folder exists and is
 // writable, it is not a folder, and its name fits the file system. Returns "" or the reason.
 std::string checkOutputLocation(const std::string& path);
