@@ -450,6 +450,12 @@ int renderCommand(int argc, char** argv) {
 
     if (gSignal != 0)
         std::fprintf(err, "pt: the signal came after the last sample; the whole image was written\n");
+    // A few discarded samples are rounding; many mean light lost somewhere: say so, not just count.
+    uint64_t samples = uint64_t(args.width) * args.height * result.film.minSamples();
+    if (!args.quiet && result.rays.discarded > std::max<uint64_t>(10, samples / 10000))
+        std::fprintf(err, "pt: warning: %llu of %llu samples came out NaN or infinite and were dropped; the image is "
+                          "darker than it should be where they fell\n",
+                     (unsigned long long)result.rays.discarded, (unsigned long long)samples);
     const RayCounts& r = result.rays;
     std::string clampNote =
         args.settings.clamp > 0.0f ? ", " + std::to_string(r.clamped) + " clamped (--clamp biases the image)" : "";

@@ -179,6 +179,15 @@ printf 'newmtl Bright\nKd 1.5 0.5 0.5\nKd 1.2 0.5 0.5\n' > bright.mtl
 printf 'mtllib camera.mtl\nmtllib bright.mtl\n%susemtl Bright\nf 1 2 3\n' "$tri" > bright.obj
 check kd_above_one_warns 0 'bright.mtl:2: Kd above 1 in material "Bright" creates energy' render bright.obj -spp 2 --res 16x16 -o out/a.exr
 [[ $("$pt" render bright.obj -spp 1 --res 8x8 -o bright.exr 2>&1 | grep -c "creates energy") -eq 1 ]] || fail "kd_above_one_warns: not once"
+printf 'newmtl Gain\nKd 20 1 1\n' > gain.mtl
+printf 'mtllib gain.mtl\n%susemtl Gain\nf 1 2 3\n' "$tri" > gain.obj
+check kd_beyond_10 1 'gain.mtl:2: Kd: 20 is beyond 10' $(render gain.obj gain)
+# Light that grows 10x per bounce inside a closed box overflows float after ~40 bounces: the
+# dropped samples are said in a warning, not only counted.
+printf 'newmtl Gain\nKd 10\nnewcamera C\ncameraposition 0 0 0.5\ncameratarget 0 0 0\nnewlight L\nlightposition 0 0 0\nlightintensity 1\n' > box.mtl
+{ echo 'mtllib box.mtl'; for z in -1 1; do for y in -1 1; do for x in -1 1; do echo "v $x $y $z"; done; done; done
+  echo 'usemtl Gain'; printf 'f 1 2 4 3\nf 5 7 8 6\nf 1 5 6 2\nf 3 4 8 7\nf 1 3 7 5\nf 2 6 8 4\n'; } > box.obj
+check dropped_samples_warn 0 "samples came out NaN or infinite and were dropped" render box.obj -spp 2 --res 8x8 --max-depth 200 -o out/a.exr
 printf 'mtllib camera.mtl\n%sv -1e17 -1e17 -5\nv 1e17 -1e17 -5\nv 0 1e17 -5\nf 1 2 3\nf 4 5 6\n' "$tri" > backdrop.obj
 check backdrop_at_1e17 1 "backdrop.obj:5: v: coordinate beyond +-1e12" $(render backdrop.obj bd)
 printf 'mtllib camera.mtl\nv 0 0 0\nv 1e-7 0 0\nv 0 1e-7 0\nf 1 2 3\n' > tiny.obj

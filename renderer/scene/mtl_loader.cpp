@@ -76,9 +76,14 @@ Spectrum MtlParser::nonNegativeColor(Tokens& t, std::string_view keyword) {
     return c;
 }
 
-// Kd and Ks above 1 reflect more light than arrives: allowed (artists do it), but said once.
+// Kd and Ks above 1 reflect more light than arrives: allowed (artists do it), but said once;
+// beyond kMaxReflectance refused.
 Spectrum MtlParser::reflectance(Tokens& t, std::string_view keyword) {
     Spectrum c = nonNegativeColor(t, keyword);
+    if (maxComponent(c) > kMaxReflectance)
+        t.fail(std::string(keyword) + ": " + shortNumber(maxComponent(c)) +
+               " is beyond 10; a reflectance is at most 1, and beyond 10 light grows so fast along a path "
+               "that samples overflow float");
     if (maxComponent(c) > 1.0f)
         warnings.once("reflectance:" + path + ":" + material.m.name,
                       t.location() + std::string(keyword) + " above 1 in material \"" + material.m.name +

@@ -15,6 +15,9 @@ inline constexpr float kMinSceneSize = 1e-6f;
 // Largest emitted radiance (Ke, or a sphere light's I / (pi r^2)), per channel. A sample's square
 // must fit in float for the variance layer: 1e18 leaves 1e38.
 inline constexpr float kMaxRadiance = 1e18f;
+// Largest Kd or Ks. Above 1 a material creates energy (a warning); at 10 sixteen bounces already
+// multiply a sample by 1e16, so beyond it samples would overflow float.
+inline constexpr float kMaxReflectance = 10.0f;
 // A point light's intensity is bounded so that at a tenth of the scene's size from it the
 // irradiance stays below kMaxRadiance: I <= kMaxRadiance * (size / 10)^2.
 inline constexpr float kPointLightDistanceFraction = 0.1f;
