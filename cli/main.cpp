@@ -1,6 +1,7 @@
 // pt: a headless batch path tracer. This file only dispatches to the subcommands.
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/console.h"
 
 #include <cstdio>
 #include <cstring>
@@ -42,10 +43,10 @@ int main(int argc, char** argv) {
         if (!std::strcmp(cmd, "render")) return pt::cli::renderCommand(argc - 1, argv + 1);
         if (!std::strcmp(cmd, "diff")) return pt::cli::diffCommand(argc - 1, argv + 1);
     } catch (const std::bad_alloc&) { // each stage names what it allocates; this is the last resort
-        std::fprintf(stderr, "pt: error: out of memory\n");
+        std::fprintf(pt::cli::errorStream(), "pt: error: out of memory\n");
         return 1;
     } catch (const std::exception& e) { // last resort: never an uncaught exception trace
-        std::fprintf(stderr, "pt: error: %s\n", e.what());
+        std::fprintf(pt::cli::errorStream(), "pt: error: %s\n", e.what()); // the real stderr, even with -q
         return 1;
     }
     std::fprintf(stderr, "pt: unknown command \"%s\"\n\n%s", cmd, kUsage);

@@ -65,6 +65,17 @@ expect 0 "clamped (--clamp biases the image)" "$pt" render "$scene" -spp 8 --res
 max=$(oiiotool --stats "$tmp/clamp.exr" | awk '/Stats Max/ {print ($3 > $4 ? ($3 > $5 ? $3 : $5) : ($4 > $5 ? $4 : $5)); exit}')
 awk -v m="$max" 'BEGIN {exit !(m <= 0.25 + 1e-6)}' || { echo "FAIL: --clamp 0.25 left a pixel at $max"; failures=$((failures + 1)); }
 
+# The progress line on a terminal: the sample count, and never wider than the terminal (30 here).
+if command -v script > /dev/null; then
+  script -qc "stty cols 30; '$pt' render '$scene' -spp 256 --res 96x96 -o '$tmp/progress.exr'" /dev/null > "$tmp/tty.txt" 2>&1
+  segments=$(tr '\r' '\n' < "$tmp/tty.txt" | sed 's/\x1b\[K//g' | grep 'spp  ')
+  [[ -n "$segments" ]] || { echo "FAIL: no progress line with the sample count: $(head -c 300 "$tmp/tty.txt")"; failures=$((failures + 1)); }
+  widest=$(echo "$segments" | awk '{ if (length($0) > w) w = length($0) } END { print w + 0 }')
+  [[ $widest -le 29 ]] || { echo "FAIL: a progress line is $widest columns on a 30-column terminal"; failures=$((failures + 1)); }
+else
+  echo "SKIP: progress line (no script command)"
+fi
+
 # SIGINT and SIGTERM: the render stops, the finished samples go to OUT.partial.EXT, OUT is untouched.
 # Job control on: a script's background jobs otherwise start with SIGINT ignored, which pt
 # respects, as a user's shell script would expect.
