@@ -1,4 +1,5 @@
 #include "scene/mtl_loader.h"
+#include "material/lab_bsdf.h"
 
 #include <gtest/gtest.h>
 
@@ -79,13 +80,15 @@ TEST(Mtl, DissolveIsOneMinusTransparency) {
     EXPECT_FLOAT_EQ(p.material("A").transparency, 0.75f);
 }
 
-// Pm builds the tree as R0 = mix(((eta-1)/(eta+1))^2, Ks, m), w = 1, Spec colour 1,
-// Diffuse colour Kd (1 - m), whatever order the lines come in.
+// Pm builds the tree, when the material is evaluated, as R0 = mix(((eta-1)/(eta+1))^2, Ks, m),
+// w = 1, Spec colour 1, Diffuse colour Kd (1 - m), whatever order the lines come in.
 TEST(Mtl, MetallicRewritesTheTree) {
     Parsed p = parse("newmtl Half\nPm 0.5\nKd 0.8 0.6 0.4\nKs 0.9 0.5 0.1\nNi 1.5\n"
                      "newmtl Metal\nKd 0 0 0\nKs 0.9 0.9 0.9\nNi 1.55\nPm 1.0\n"
-                     "newmtl Dielectric\nKd 0.8 0.8 0.2\nKs 0.04 0.04 0.04\nNi 1.55\nPm 0.0\n");
-    const Material& half = p.material("Half");
+                     "newmtl Dielectric\nKd 0.8 0.8 0.2\nKs 0.04 0.04 0.04\nNi 1.55\nPm 0.0\n"
+                     "newmtl Plain\nKd 0.5\n");
+    auto lab = [&](const char* name) { return labParameters(p.material(name), p.material(name).kd); };
+    LabParameters half = lab("Half");
     float f0 = 0.04f; // ((1.5 - 1) / 2.5)^2
     EXPECT_NEAR(half.r0.x, 0.5f * f0 + 0.5f * 0.9f, 1e-6f);
     EXPECT_NEAR(half.r0.y, 0.5f * f0 + 0.5f * 0.5f, 1e-6f);
@@ -93,10 +96,11 @@ TEST(Mtl, MetallicRewritesTheTree) {
     EXPECT_EQ(half.blend, 1.0f);
     EXPECT_EQ(half.ks, Spectrum(1.0f));
     EXPECT_EQ(half.kd, Spectrum(0.4f, 0.3f, 0.2f));
-    EXPECT_NEAR(p.material("Metal").r0.x, 0.9f, 1e-6f);
-    EXPECT_EQ(p.material("Metal").kd, Spectrum(0.0f));
-    EXPECT_NEAR(p.material("Dielectric").r0.x, std::pow(0.55f / 2.55f, 2.0f), 1e-6f);
-    EXPECT_EQ(p.material("Dielectric").kd, Spectrum(0.8f, 0.8f, 0.2f));
+    EXPECT_NEAR(lab("Metal").r0.x, 0.9f, 1e-6f);
+    EXPECT_EQ(lab("Metal").kd, Spectrum(0.0f));
+    EXPECT_NEAR(lab("Dielectric").r0.x, std::pow(0.55f / 2.55f, 2.0f), 1e-6f);
+    EXPECT_EQ(lab("Dielectric").kd, Spectrum(0.8f, 0.8f, 0.2f));
+    EXPECT_LT(p.material("Plain").metallic, 0.0f); // without Pm the tree is as written
 }
 
 TEST(Mtl, LightsAndCameras) {

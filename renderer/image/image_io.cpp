@@ -1,6 +1,6 @@
 #include "image/image_io.h"
 
-#include "image/texture_io.h"
+#include "core/color.h"
 #include "io/output_file.h"
 
 #include <OpenImageIO/filesystem.h>

@@ -4,7 +4,7 @@
 
 namespace pt {
 
-LabBsdf LabBsdf::make(const Material& m, const Spectrum& kd, float cosThetaO, HemisphereSampling hemisphere) {
+LabBsdf LabBsdf::make(const LabParameters& m, float cosThetaO, HemisphereSampling hemisphere) {
     LabBsdf b;
     b.eta = m.eta;
     b.hemisphere = hemisphere;
@@ -12,7 +12,7 @@ LabBsdf LabBsdf::make(const Material& m, const Spectrum& kd, float cosThetaO, He
     Spectrum rest = Spectrum(1.0f) - wF;
     b.mirror = wF * m.ks;
     b.refract = rest * m.transparency;
-    b.diffuse = rest * (1.0f - m.transparency) * kd;
+    b.diffuse = rest * (1.0f - m.transparency) * m.kd;
 
     float am = average(b.mirror), at = average(b.refract), ad = average(b.diffuse);
     float sum = am + at + ad;
@@ -54,7 +54,8 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
     if (chooseMirror) {
         out.wi = Vec3(-wo.x, -wo.y, wo.z);
         out.weight = mirror / pMirror;
-        out.pdf = pMirror;
+        out.pdf = 0.0f;
+        out.lobeProbability = pMirror;
         out.delta = true;
         return true;
     }
@@ -71,7 +72,8 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
             out.wi = Vec3(-wo.x, -wo.y, wo.z); // total internal reflection, reflectance 1
             out.weight = refract / pRefract;
         }
-        out.pdf = pRefract;
+        out.pdf = 0.0f;
+        out.lobeProbability = pRefract;
         out.delta = true;
         return true;
     }
@@ -88,6 +90,7 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
     wi.z *= side;
     out.wi = wi;
     out.pdf = pdf(wo, wi);
+    out.lobeProbability = pDiffuse;
     out.delta = false;
     return true;
 }

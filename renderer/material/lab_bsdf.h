@@ -26,13 +26,38 @@ namespace pt {
 
 enum class HemisphereSampling { Cosine, Uniform };
 
+// A sampled direction. The solid-angle density and the probability of the lobe that produced it
+// are kept apart: once glossy and delta lobes mix in one material, a delta lobe's "pdf" is only a
+// selection probability, and using it as a density (in MIS) would be wrong.
 struct BsdfSample {
     Vec3 wi;
     Spectrum weight; // f * |cos theta_i| / pdf, or the lobe weight over its probability for delta lobes
-    float pdf = 0.0f; // solid-angle density; for delta lobes, only the lobe's selection probability
+    float pdf = 0.0f; // solid-angle density of wi over all non-delta lobes, lobe choice included; 0 for delta
+    float lobeProbability = 0.0f; // probability that the sampled lobe was chosen
     bool delta = false;
     float radianceScale = 1.0f; // (eta_o / eta_i)^2 included in weight when the path refracted
 };
+
+// The lab tree's parameters at one hit, after textures and the Pm rule (evaluate_material.h).
+struct LabParameters {
+    Spectrum kd{0.7f}, ks{1.0f}, r0{0.0f};
+    float blend = 0.0f, transparency = 0.0f, eta = 1.0f;
+};
+
+// The parameters of a material whose Kd, after its texture, is `kd`. With Pm (the PBR
+// extension), metallic m mixes the dielectric's F0 towards Ks, the blend is always on, the mirror
+// is white and the diffuse part fades out with m.
+inline LabParameters labParameters(const Material& m, const Spectrum& kd) {
+    LabParameters p{kd, m.ks, m.r0, m.blend, m.transparency, m.eta};
+    if (m.metallic >= 0.0f) {
+        float f0 = sqr((m.eta - 1.0f) / (m.eta + 1.0f));
+        p.r0 = glm::mix(Spectrum(f0), m.ks, m.metallic);
+        p.blend = 1.0f;
+        p.ks = Spectrum(1.0f);
+        p.kd = kd * (1.0f - m.metallic);
+    }
+    return p;
+}
 
 struct LabBsdf {
     Spectrum mirror{0.0f}, refract{0.0f}, diffuse{0.0f};
@@ -40,9 +65,14 @@ struct LabBsdf {
     float eta = 1.0f; // index of refraction inside the surface; the outside is 1
     HemisphereSampling hemisphere = HemisphereSampling::Cosine;
 
-    // `kd` is the material's Kd already multiplied by its texture; cosThetaO is wo.z.
+    // The tree for outgoing direction cosThetaO = wo.z.
+    static LabBsdf make(const LabParameters& p, float cosThetaO, HemisphereSampling hemisphere = HemisphereSampling::Cosine);
+    // Same for a material whose Kd, after its texture, is `kd` (tests; the renderer goes through
+    // evaluate_material.h).
     static LabBsdf make(const Material& m, const Spectrum& kd, float cosThetaO,
-                        HemisphereSampling hemisphere = HemisphereSampling::Cosine);
+                        HemisphereSampling hemisphere = HemisphereSampling::Cosine) {
+        return make(labParameters(m, kd), cosThetaO, hemisphere);
+    }
 
     bool hasNonDelta() const { return pDiffuse > 0.0f; }
     bool isBlack() const { return pMirror + pRefract + pDiffuse == 0.0f; }

@@ -1,7 +1,7 @@
 #include "render/path_tracer.h"
 
 #include "render/surface_point.h"
-#include "render/texture_lookup.h"
+#include "material/evaluate_material.h"
 
 namespace pt {
 namespace {
@@ -69,9 +69,8 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
         if (glm::dot(wo, n) * glm::dot(wo, sp.ng) <= 0.0f) n = sp.ng;
         Frame frame(n);
         Vec3 woLocal = frame.toLocal(wo);
-        Spectrum kd = m.kd;
-        if (m.kdTexture >= 0) kd *= lookupTexture(scene_.textures[m.kdTexture], hitUv(scene_, hit));
-        LabBsdf bsdf = LabBsdf::make(m, kd, woLocal.z, settings_.hemisphere);
+        LabBsdf bsdf = evaluateMaterial(m, scene_.textures, [&] { return hitUv(scene_, hit); }, woLocal.z,
+                                        settings_.hemisphere);
         if (depth == 0 && first) {
             first->albedo = bsdf.mirror + bsdf.refract + bsdf.diffuse;
             first->normal = woLocal.z >= 0.0f ? n : -n;

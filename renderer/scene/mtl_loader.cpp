@@ -1,6 +1,6 @@
 #include "scene/mtl_loader.h"
 
-#include "image/texture_io.h"
+#include "texture/texture_io.h"
 #include "scene/text_parser.h"
 
 #include <filesystem>
@@ -11,7 +11,7 @@ namespace {
 
 enum class Block { None, Material, Light, Camera };
 
-// A material as written, before the metallic (Pm) rule rewrites it into the lab tree.
+// A material as written; the metallic (Pm) rule is applied when it is evaluated at a hit.
 struct PendingMaterial {
     Material m;
     std::optional<float> metallic;
@@ -127,16 +127,7 @@ int MtlParser::loadTexture(std::string_view spec, std::string_view keyword, cons
 
 void MtlParser::finishMaterial() {
     Material m = material.m;
-    if (material.metallic) {
-        // The PBR extension: metallic m mixes the dielectric's F0 towards Ks, the blend is always
-        // on, the mirror is white and the diffuse part fades out with m.
-        float m01 = *material.metallic;
-        float f0 = sqr((m.eta - 1.0f) / (m.eta + 1.0f));
-        m.r0 = glm::mix(Spectrum(f0), m.ks, m01);
-        m.blend = 1.0f;
-        m.ks = Spectrum(1.0f);
-        m.kd = m.kd * (1.0f - m01);
-    }
+    if (material.metallic) m.metallic = *material.metallic; // the Pm rule is applied at each hit
     if (materialIndex.count(m.name))
         warnings.add(path + ":" + std::to_string(material.line) + ": material \"" + m.name +
                      "\" defined again; the later definition wins");

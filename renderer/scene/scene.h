@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/math.h"
+#include "texture/texture.h"
 
 #include <cstdint>
 #include <string>
@@ -34,6 +35,7 @@ struct SphereLight {
     Spectrum radiance() const { return intensity / (kPi * radius * radius); }
 };
 
+// A material as its file gives it; material/evaluate_material.h turns it into a BSDF at a hit.
 // Parameters of the lab material tree (see material/lab_bsdf.h for how they combine):
 //   f  = w * FresnelBlend(R0)[reflect: Spec(Ks), otherwise: B1] + (1 - w) * B1
 //   B1 = T * Refr(eta) + (1 - T) * Diffuse(Kd)
@@ -47,16 +49,10 @@ struct Material {
     float transparency = 0.0f;    // T (transparency, Tr, 1 - d)
     float eta = 1.0f;             // index of refraction inside the surface (Ni)
     float roughness = 0.001f;     // microfacet alpha (specularroughness); <= 0.001 is smooth
+    float metallic = -1.0f;       // Pm in [0, 1], applied when the material is evaluated; < 0: not given
     Spectrum emission{0.0f};      // emitted radiance, both sides (Ke, emittance)
 
     bool isEmissive() const { return !isBlack(emission); }
-};
-
-// Linear RGB texels, row 0 at the top of the image (v = 1 in texture space).
-struct Texture {
-    std::string path;
-    int width = 0, height = 0;
-    std::vector<Spectrum> texels;
 };
 
 // Radiance seen by rays that leave the scene: `sky` for directions with y > 0, else `ground`.

@@ -1,7 +1,7 @@
-// Reading textures through OpenImageIO.
+// Reading images as textures through OpenImageIO.
 #pragma once
 
-#include "scene/scene.h"
+#include "texture/texture.h"
 
 #include <string>
 
@@ -17,8 +17,5 @@ bool readTexture(const std::string& path, Texture& texture, std::string& error, 
 
 // Bytes that all textures of a scene may take: a quarter of this machine's memory.
 double textureMemoryBudget();
-
-float srgbToLinear(float c);
-float linearToSrgb(float c);
 
 } // namespace pt

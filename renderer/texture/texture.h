@@ -1,9 +1,22 @@
-// Bilinear texture lookup with repeat wrapping. v = 0 is the bottom of the image, as in OBJ.
+// A texture: linear RGB texels and how to look them up. The texture module (texture/) owns
+// reading images as textures and every lookup, so that materials only ask for a value at a uv.
 #pragma once
 
-#include "scene/scene.h"
+#include "core/math.h"
+
+#include <string>
+#include <vector>
 
 namespace pt {
+
+// Linear RGB texels, row 0 at the top of the image (v = 1 in texture space).
+struct Texture {
+    std::string path;
+    int width = 0, height = 0;
+    std::vector<Spectrum> texels;
+};
+
+// Bilinear lookup with repeat wrapping. v = 0 is the bottom of the image, as in OBJ.
 
 inline Spectrum lookupTexture(const Texture& tex, Vec2 uv) {
     float x = uv.x * float(tex.width) - 0.5f;

@@ -1,4 +1,6 @@
-#include "image/texture_io.h"
+#include "texture/texture_io.h"
+
+#include "core/color.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -8,14 +10,6 @@
 #include <unistd.h>
 
 namespace pt {
-
-float srgbToLinear(float c) {
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
-float linearToSrgb(float c) {
-    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
 
 double textureMemoryBudget() {
     double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
