@@ -6,6 +6,7 @@
 
 #include "core/math.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <sstream>
@@ -80,20 +81,30 @@ inline ChiSquareResult chiSquareDirections(const std::function<bool(Vec2, Vec3&)
         if (sample(u, d) && isFinite(d)) observed[binOf(d)] += 1;
         else observed[bins] += 1;
     }
-    // Expected counts: midpoint rule on a fine grid inside each bin (dw = dz dphi).
-    const int sub = 12;
+    // Expected counts: midpoint rule on a fine grid inside each bin (dw = dz dphi); a bin whose
+    // density varies by more than 2x over its grid is summed again 8 times finer.
+    auto integrateBin = [&](int ti, int pi, int sub, bool& uneven) {
+        double z0 = -1.0 + 2.0 * ti / thetaBins, dz = 2.0 / thetaBins / sub;
+        double p0 = 2 * M_PI * pi / phiBins, dp = 2 * M_PI / phiBins / sub;
+        double integral = 0.0, lo = 1e300, hi = 0.0;
+        for (int a = 0; a < sub; ++a)
+            for (int b = 0; b < sub; ++b) {
+                double z = z0 + (a + 0.5) * dz, phi = p0 + (b + 0.5) * dp;
+                double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+                double p = pdf(Vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)));
+                lo = std::min(lo, p);
+                hi = std::max(hi, p);
+                integral += p * dz * dp;
+            }
+        uneven = hi > 2.0 * lo;
+        return integral;
+    };
     double total = 0.0;
     for (int ti = 0; ti < thetaBins; ++ti)
         for (int pi = 0; pi < phiBins; ++pi) {
-            double z0 = -1.0 + 2.0 * ti / thetaBins, dz = 2.0 / thetaBins / sub;
-            double p0 = 2 * M_PI * pi / phiBins, dp = 2 * M_PI / phiBins / sub;
-            double integral = 0.0;
-            for (int a = 0; a < sub; ++a)
-                for (int b = 0; b < sub; ++b) {
-                    double z = z0 + (a + 0.5) * dz, phi = p0 + (b + 0.5) * dp;
-                    double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-                    integral += pdf(Vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z))) * dz * dp;
-                }
+            bool uneven = false;
+            double integral = integrateBin(ti, pi, 12, uneven);
+            if (uneven) integral = integrateBin(ti, pi, 96, uneven);
             expected[ti * phiBins + pi] = integral * samples;
             total += integral;
         }
@@ -130,6 +141,130 @@ inline ChiSquareResult chiSquareDirections(const std::function<bool(Vec2, Vec3&)
     }
     result.pValue = dof > 0 ? chiSquareSurvival(chi2, dof) : 1.0;
     result.pass = result.pValue > alpha;
+    report << "chi2 = " << chi2 << ", dof = " << dof << ", p = " << result.pValue << ", integral of pdf = " << total
+           << ", no-sample fraction observed " << observed[bins] / samples;
+    result.report = report.str();
+    return result;
+}
+
+// Chi-square test of a sampler of microfacet lobes in the space of their half vectors m (unit,
+// m.z > 0), which maps one to one onto the scattered directions of each side (reflection,
+// transmission). Bins are uniform in phi and in a = atan(tan(theta_m) / alpha) / (pi / 2), the
+// polar angle once the lobe is stretched to alpha = 1, so narrow lobes spread over many bins and
+// the density in a stays smooth up to the horizon. `sample(u1, u2, side, m)` draws one sample,
+// returning false when it yields none (absorbed, lost); `pdfM(side, m)` is the claimed density of
+// m on that side, whose integral over all sides may be below 1 (the rest is "no sample").
+inline ChiSquareResult chiSquareHalfVectors(const std::function<bool(float, Vec2, int&, Vec3&)>& sample,
+                                            const std::function<double(int, const Vec3&)>& pdfM, float alpha,
+                                            int sides = 1, int samples = 400000, double pAlpha = 1e-4,
+                                            uint64_t seed = 99) {
+    const int na = 24, nphi = 24, perSide = na * nphi, bins = sides * perSide;
+    std::vector<double> expected(bins + 1, 0.0), observed(bins + 1, 0.0);
+    auto fromAngles = [](double theta, double phi) {
+        return Vec3(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)));
+    };
+    // Midpoint sums of pdf(theta(a)) sin(theta) dtheta/da over sub-cells; a bin that a cut-off of
+    // the density crosses (some midpoints zero, some not) is summed again 16 times finer, one over
+    // which it varies by more than 3x 8 times finer.
+    auto integrateBin = [&](int side, int i, int j, int sub, bool& straddles, bool& uneven) {
+        double sum = 0.0, lo = 1e300, hi = 0.0;
+        bool anyZero = false, anyPositive = false;
+        for (int si = 0; si < sub; ++si)
+            for (int sj = 0; sj < sub; ++sj) {
+                double a = (i + (si + 0.5) / sub) / na, da = 1.0 / (na * sub);
+                double c = std::cos(0.5 * M_PI * a), sn = std::sin(0.5 * M_PI * a);
+                double theta = std::atan2(alpha * sn, c);
+                double dThetaDa = 0.5 * M_PI * alpha / (c * c + alpha * alpha * sn * sn);
+                double phi = (j + (sj + 0.5) / sub) * 2.0 * M_PI / nphi, dphi = 2.0 * M_PI / (nphi * sub);
+                double p = pdfM(side, fromAngles(theta, phi));
+                (p > 0.0 ? anyPositive : anyZero) = true;
+                double q = p * std::sin(theta) * dThetaDa;
+                lo = std::min(lo, q);
+                hi = std::max(hi, q);
+                sum += q * da * dphi;
+            }
+        // A cut-off that only grazes the bin misses every midpoint; its edges still show it.
+        if (sub < 64)
+            for (int e = 0; e <= 64 && !(anyZero && anyPositive); ++e)
+                for (int edge = 0; edge < 4; ++edge) {
+                    double t = e / 64.0;
+                    double a = (i + (edge == 0 ? 0.0 : edge == 1 ? 1.0 : t)) / na;
+                    double ph = (j + (edge == 2 ? 0.0 : edge == 3 ? 1.0 : t)) * 2.0 * M_PI / nphi;
+                    a = std::clamp(a, 1e-9, 1.0 - 1e-9);
+                    double theta = std::atan2(alpha * std::sin(0.5 * M_PI * a), std::cos(0.5 * M_PI * a));
+                    (pdfM(side, fromAngles(theta, ph)) > 0.0 ? anyPositive : anyZero) = true;
+                }
+        straddles = anyZero && anyPositive;
+        uneven = hi > 3.0 * lo;
+        return sum;
+    };
+    uint64_t state = seed * 0x9E3779B97F4A7C15ULL + 1;
+    auto next = [&] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return float((state >> 40) * 0x1p-24);
+    };
+    for (int k = 0; k < samples; ++k) {
+        int side = 0;
+        Vec3 m;
+        float u1 = next();
+        Vec2 u2(next(), next());
+        if (!sample(u1, u2, side, m) || !isFinite(m) || side < 0 || side >= sides) {
+            observed[bins] += 1;
+            continue;
+        }
+        double a = std::atan2(std::sqrt(double(m.x) * m.x + double(m.y) * m.y), double(alpha) * m.z) / (0.5 * M_PI);
+        double phi = std::atan2(double(m.y), double(m.x));
+        if (phi < 0) phi += 2 * M_PI;
+        int i = std::clamp(int(a * na), 0, na - 1), j = std::min(nphi - 1, int(phi / (2 * M_PI) * nphi));
+        observed[side * perSide + i * nphi + j] += 1;
+    }
+    // Expected counts; a bin that holds samples but whose coarse sum is zero may hold a sliver of
+    // support between the sub-cell midpoints, so it too is summed finer.
+    double total = 0.0;
+    for (int side = 0; side < sides; ++side)
+        for (int i = 0; i < na; ++i)
+            for (int j = 0; j < nphi; ++j) {
+                bool straddles = false, uneven = false;
+                double v = integrateBin(side, i, j, 16, straddles, uneven);
+                if (straddles || (v == 0.0 && observed[side * perSide + i * nphi + j] > 0))
+                    v = integrateBin(side, i, j, 256, straddles, uneven);
+                else if (uneven) // steep (grazing views pile visible normals up towards wo)
+                    v = integrateBin(side, i, j, 128, straddles, uneven);
+                expected[side * perSide + i * nphi + j] = v * samples;
+                total += v;
+            }
+    expected[bins] = std::max(0.0, 1.0 - total) * samples;
+    ChiSquareResult result;
+    std::ostringstream report;
+    double chi2 = 0, pooledE = 0, pooledO = 0;
+    int dof = -1;
+    for (int b = 0; b <= bins; ++b) {
+        // A few samples may land in a bin whose sub-cells all miss a sliver of support (at the
+        // horizon, at a cut-off); more is a sample where the density is zero.
+        if (expected[b] == 0.0 && observed[b] > 3 && b < bins) {
+            report << "side " << b / perSide << " bin " << b % perSide << ": " << observed[b]
+                   << " samples where the pdf is 0";
+            result.report = report.str();
+            return result;
+        }
+        if (expected[b] < 5.0) {
+            pooledE += expected[b];
+            pooledO += observed[b];
+            continue;
+        }
+        chi2 += (observed[b] - expected[b]) * (observed[b] - expected[b]) / expected[b];
+        ++dof;
+    }
+    if (pooledE >= 5.0) {
+        chi2 += (pooledO - pooledE) * (pooledO - pooledE) / pooledE;
+        ++dof;
+    } else if (pooledO > 5.0 * std::max(1.0, pooledE) + 10.0) {
+        report << "pooled low-density bins hold " << pooledO << " samples, expected " << pooledE;
+        result.report = report.str();
+        return result;
+    }
+    result.pValue = dof > 0 ? chiSquareSurvival(chi2, dof) : 1.0;
+    result.pass = result.pValue > pAlpha && dof > 10;
     report << "chi2 = " << chi2 << ", dof = " << dof << ", p = " << result.pValue << ", integral of pdf = " << total
            << ", no-sample fraction observed " << observed[bins] / samples;
     result.report = report.str();

@@ -103,6 +103,14 @@ TEST(Mtl, MetallicRewritesTheTree) {
     EXPECT_LT(p.material("Plain").metallic, 0.0f); // without Pm the tree is as written
 }
 
+// specularroughness is GGX alpha as is; Pr is perceptual roughness, alpha = Pr^2.
+TEST(Mtl, Roughness) {
+    Parsed p = parse("newmtl A\nspecularroughness 0.3\nnewmtl B\nPr 0.5\nnewmtl C\nKd 1\n");
+    EXPECT_FLOAT_EQ(p.material("A").roughness, 0.3f);
+    EXPECT_FLOAT_EQ(p.material("B").roughness, 0.25f);
+    EXPECT_FLOAT_EQ(p.material("C").roughness, 0.001f);
+}
+
 TEST(Mtl, LightsAndCameras) {
     Parsed p = parse("newlight Key\n\tlightposition -0.7 0.7 -0.7\n\tlightcolor 1.0 0.8 0.8\n"
                      "\tlightradius 0.2\n\tlightintensity 2.0\n"

@@ -287,3 +287,25 @@ TEST(Invariance, OutsideTheRangeIsRefused) {
 
 } // namespace
 } // namespace pt::test
+
+namespace pt::test {
+namespace {
+
+// As alpha falls to the smooth threshold, rough Spec and Refr become the delta lobes: the glass
+// scene (a glass ball and a metal ball) at alpha 0.0011 renders the smooth image.
+TEST(RoughLobes, ConvergeToTheSmoothOnes) {
+    Warnings w;
+    Scene smooth = loadScene(std::string(PT_SOURCE_DIR) + "/scenes/glass.obj", w);
+    Scene rough = smooth;
+    for (Material& m : rough.materials) m.roughness = 0.0011f;
+    Rendered a = render(smooth, 64, 64, 256), b = render(rough, 64, 64, 256, RenderSettings{.seed = 3});
+    EXPECT_GT(b.rays.shadow, 0u);
+    CompareOptions options;
+    options.blockSize = 8;
+    CompareReport report = compareImages(toImage(b), toImage(a), options);
+    EXPECT_TRUE(report.pass) << report.failedTests << " tests differ; worst z " << report.worst[0].z << " at "
+                             << report.worst[0].x0 << "," << report.worst[0].y0;
+}
+
+} // namespace
+} // namespace pt::test

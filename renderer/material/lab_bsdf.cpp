@@ -7,6 +7,7 @@ namespace pt {
 LabBsdf LabBsdf::make(const LabParameters& m, float cosThetaO, HemisphereSampling hemisphere) {
     LabBsdf b;
     b.eta = m.eta;
+    b.alpha = m.alpha > kSmoothAlpha ? m.alpha : 0.0f;
     b.hemisphere = hemisphere;
     Spectrum wF = m.blend * schlickFresnel(m.r0, cosThetaO);
     Spectrum rest = Spectrum(1.0f) - wF;
@@ -34,15 +35,80 @@ bool refractDirection(const Vec3& wo, float etaRel, Vec3& wt) {
     return true;
 }
 
+namespace {
+
+// The direction and lobe arithmetic below works on the side of wo: o.z > 0, and wi flipped with it.
+struct Side {
+    float sign;
+    float etaRel; // eta of wi's side over eta of wo's side, for a transmitted wi
+};
+
+Side sideOf(const Vec3& wo, float eta) { return wo.z > 0.0f ? Side{1.0f, eta} : Side{-1.0f, 1.0f / eta}; }
+
+Vec3 reflectAbout(const Vec3& o, const Vec3& m) { return 2.0f * glm::dot(o, m) * m - o; }
+
+// Refracts o (o.m > 0) through the microfacet m; false when it is totally internally reflected.
+bool refractAbout(const Vec3& o, const Vec3& m, float etaRel, Vec3& t) {
+    float c = glm::dot(o, m);
+    float sin2T = (1.0f - c * c) / (etaRel * etaRel);
+    if (sin2T >= 1.0f) return false;
+    t = (c / etaRel - std::sqrt(1.0f - sin2T)) * m - o / etaRel;
+    return true;
+}
+
+bool totallyReflects(const Vec3& o, const Vec3& m, float etaRel) {
+    float c = glm::dot(o, m);
+    return (1.0f - c * c) >= etaRel * etaRel;
+}
+
+} // namespace
+
+// The rough lobes, on wo's side (o.z > 0): f |cos theta_i| of Spec (per unit Ks weight) and of Refr.
 Spectrum LabBsdf::eval(const Vec3& wo, const Vec3& wi) const {
-    if (pDiffuse == 0.0f || wo.z * wi.z <= 0.0f) return Spectrum(0.0f);
-    return diffuse * (kInvPi * std::abs(wi.z));
+    Spectrum f(0.0f);
+    if (pDiffuse > 0.0f && wo.z * wi.z > 0.0f) f += diffuse * (kInvPi * std::abs(wi.z));
+    if (!rough() || wo.z == 0.0f) return f;
+    Side side = sideOf(wo, eta);
+    Vec3 o = wo * side.sign, i = wi * side.sign;
+    if (i.z > 0.0f) { // reflection: the mirror lobe, and Refr's totally internally reflecting facets
+        Vec3 m = safeNormalize(o + i);
+        if (m.z <= 0.0f) return f;
+        float g = ggxD(m, alpha) * smithG2Separable(o, i, m, alpha) / (4.0f * o.z);
+        if (pMirror > 0.0f) f += mirror * g;
+        if (pRefract > 0.0f && totallyReflects(o, m, side.etaRel)) f += refract * g;
+    } else if (i.z < 0.0f && pRefract > 0.0f) { // transmission through m = -(o + eta i)
+        Vec3 m = safeNormalize(-(o + side.etaRel * i));
+        if (m.z < 0.0f) m = -m;
+        float om = glm::dot(o, m), im = glm::dot(i, m);
+        if (om <= 0.0f || im >= 0.0f) return f;
+        float denom = om + side.etaRel * im;
+        f += refract * (ggxD(m, alpha) * smithG2Separable(o, i, m, alpha) * om * -im / (o.z * denom * denom));
+    }
+    return f;
 }
 
 float LabBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
-    if (pDiffuse == 0.0f || wo.z * wi.z <= 0.0f) return 0.0f;
-    float density = hemisphere == HemisphereSampling::Cosine ? std::abs(wi.z) * kInvPi : uniformHemispherePdf();
-    return pDiffuse * density;
+    float p = 0.0f;
+    if (pDiffuse > 0.0f && wo.z * wi.z > 0.0f) {
+        float density = hemisphere == HemisphereSampling::Cosine ? std::abs(wi.z) * kInvPi : uniformHemispherePdf();
+        p += pDiffuse * density;
+    }
+    if (!rough() || wo.z == 0.0f) return p;
+    Side side = sideOf(wo, eta);
+    Vec3 o = wo * side.sign, i = wi * side.sign;
+    if (i.z > 0.0f) {
+        Vec3 m = safeNormalize(o + i);
+        if (m.z <= 0.0f) return p;
+        float density = visibleNormalPdf(o, m, alpha) * reflectionJacobian(i, m);
+        float lobes = pMirror + (totallyReflects(o, m, side.etaRel) ? pRefract : 0.0f);
+        p += lobes * density;
+    } else if (i.z < 0.0f && pRefract > 0.0f) {
+        Vec3 m = safeNormalize(-(o + side.etaRel * i));
+        if (m.z < 0.0f) m = -m;
+        if (glm::dot(o, m) <= 0.0f || glm::dot(i, m) >= 0.0f) return p;
+        p += pRefract * visibleNormalPdf(o, m, alpha) * refractionJacobian(o, i, m, side.etaRel);
+    }
+    return p;
 }
 
 bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
@@ -51,6 +117,31 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
     // Choose a lobe; rounding in the probabilities must not make u1 miss every non-empty lobe.
     bool chooseMirror = u1 < pMirror || (pMirror > 0.0f && pRefract == 0.0f && pDiffuse == 0.0f);
     bool chooseRefract = !chooseMirror && (u1 < pMirror + pRefract || (pRefract > 0.0f && pDiffuse == 0.0f));
+    if (rough() && (chooseMirror || chooseRefract)) {
+        Side s = sideOf(wo, eta);
+        Vec3 o = wo * s.sign;
+        Vec3 m = sampleVisibleNormal(o, alpha, u2);
+        Vec3 i;
+        float scale = 1.0f;
+        if (chooseMirror || !refractAbout(o, m, s.etaRel, i)) {
+            i = reflectAbout(o, m);
+            if (i.z <= 0.0f) return false; // reflected into the surface: lost to single scattering
+        } else {
+            if (i.z >= 0.0f) return false;
+            scale = 1.0f / (s.etaRel * s.etaRel);
+        }
+        out.wi = i * s.sign;
+        out.radianceScale = scale;
+        out.lobeProbability = chooseMirror ? pMirror : pRefract;
+        out.delta = false;
+        // The weight of the whole mixture, f / pdf over every non-delta lobe: lower variance than
+        // the chosen lobe's own ratio (its weight times G1(wi, m) times the radiance scaling), and
+        // what MIS's pdf describes.
+        out.pdf = pdf(wo, out.wi);
+        if (!(out.pdf > 0.0f)) return false;
+        out.weight = eval(wo, out.wi) / out.pdf;
+        return true;
+    }
     if (chooseMirror) {
         out.wi = Vec3(-wo.x, -wo.y, wo.z);
         out.weight = mirror / pMirror;
@@ -92,6 +183,10 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
     out.pdf = pdf(wo, wi);
     out.lobeProbability = pDiffuse;
     out.delta = false;
+    if (rough()) { // other non-delta lobes overlap the diffuse one: weigh the whole mixture
+        if (!(out.pdf > 0.0f)) return false;
+        out.weight = eval(wo, wi) / out.pdf;
+    }
     return true;
 }
 

@@ -6,9 +6,20 @@
 //
 // For a fixed outgoing direction the blends are constants, so the tree collapses into a sum of
 // three lobes with per-hit weights:
-//   mirror  (delta)     w F Ks
-//   refract (delta)     (1 - w F) T
+//   mirror  (Spec)      w F Ks
+//   refract (Refr)      (1 - w F) T
 //   diffuse (Lambert)   (1 - w F)(1 - T) Kd
+// With roughness alpha = specularroughness <= 0.001 Spec and Refr are delta lobes. Above it they
+// are GGX microfacet lobes (material/microfacet.h), with the separable Smith G of Walter et al.
+// 2007 and no Fresnel of their own (the tree's FresnelBlend applies it):
+//   Spec: f |cos theta_i| = Ks D(h) G(wo, wi, h) / (4 |cos theta_o|)
+//   Refr: per microfacet normal m, the smooth rule: refract through m with throughput 1 (and the
+//         same (eta_o / eta_i)^2 radiance scaling), or where refraction through m is impossible,
+//         reflect about m with reflectance 1: Walter et al.'s BTDF (eq. 21) with F = 0, plus the
+//         reflection of the totally internally reflecting microfacets.
+// Both are sampled through the normals visible from wo, so a sample's weight is the lobe weight
+// times G1(wi, m); single scattering loses the energy of paths that would bounce between
+// microfacets (tests/lab_bsdf_test.cpp tabulates how much).
 // One lobe is sampled with probability proportional to its average weight, which is unbiased for
 // the whole tree and never samples a lobe of weight zero.
 //
@@ -20,6 +31,7 @@
 #pragma once
 
 #include "core/math.h"
+#include "material/microfacet.h"
 #include "scene/scene.h"
 
 namespace pt {
@@ -42,13 +54,14 @@ struct BsdfSample {
 struct LabParameters {
     Spectrum kd{0.7f}, ks{1.0f}, r0{0.0f};
     float blend = 0.0f, transparency = 0.0f, eta = 1.0f;
+    float alpha = 0.001f; // GGX roughness of Spec and Refr; <= kSmoothAlpha: delta lobes
 };
 
 // The parameters of a material whose Kd, after its texture, is `kd`. With Pm (the PBR
 // extension), metallic m mixes the dielectric's F0 towards Ks, the blend is always on, the mirror
 // is white and the diffuse part fades out with m.
 inline LabParameters labParameters(const Material& m, const Spectrum& kd) {
-    LabParameters p{kd, m.ks, m.r0, m.blend, m.transparency, m.eta};
+    LabParameters p{kd, m.ks, m.r0, m.blend, m.transparency, m.eta, m.roughness};
     if (m.metallic >= 0.0f) {
         float f0 = sqr((m.eta - 1.0f) / (m.eta + 1.0f));
         p.r0 = glm::mix(Spectrum(f0), m.ks, m.metallic);
@@ -63,7 +76,10 @@ struct LabBsdf {
     Spectrum mirror{0.0f}, refract{0.0f}, diffuse{0.0f};
     float pMirror = 0.0f, pRefract = 0.0f, pDiffuse = 0.0f;
     float eta = 1.0f; // index of refraction inside the surface; the outside is 1
+    float alpha = 0.0f; // GGX roughness of the mirror and refraction lobes; 0 when they are smooth
     HemisphereSampling hemisphere = HemisphereSampling::Cosine;
+
+    bool rough() const { return alpha > 0.0f; }
 
     // The tree for outgoing direction cosThetaO = wo.z.
     static LabBsdf make(const LabParameters& p, float cosThetaO, HemisphereSampling hemisphere = HemisphereSampling::Cosine);
@@ -74,7 +90,7 @@ struct LabBsdf {
         return make(labParameters(m, kd), cosThetaO, hemisphere);
     }
 
-    bool hasNonDelta() const { return pDiffuse > 0.0f; }
+    bool hasNonDelta() const { return pDiffuse > 0.0f || (rough() && pMirror + pRefract > 0.0f); }
     bool isBlack() const { return pMirror + pRefract + pDiffuse == 0.0f; }
 
     Spectrum eval(const Vec3& wo, const Vec3& wi) const;

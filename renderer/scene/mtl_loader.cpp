@@ -240,9 +240,12 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
         requireBlock(Block::Material, keyword, t);
         m.eta = t.number(keyword);
         if (!(m.eta > 0.0f)) t.fail(std::string(keyword) + ": expected an index of refraction > 0");
-    } else if (is("specularroughness")) {
+    } else if (is("specularroughness")) { // GGX alpha, as is
         requireBlock(Block::Material, keyword, t);
         m.roughness = nonNegative(t, keyword);
+    } else if (is("Pr")) { // perceptual roughness, as in glTF and Blender: alpha = Pr^2
+        requireBlock(Block::Material, keyword, t);
+        m.roughness = sqr(unitInterval(t, keyword));
     } else if (is("emittance") || is("Ke")) {
         requireBlock(Block::Material, keyword, t);
         m.emission = nonNegativeColor(t, keyword);

@@ -48,7 +48,7 @@ struct Material {
     float blend = 0.0f;           // w, weight of the Fresnel blend (reflat90deg)
     float transparency = 0.0f;    // T (transparency, Tr, 1 - d)
     float eta = 1.0f;             // index of refraction inside the surface (Ni)
-    float roughness = 0.001f;     // microfacet alpha (specularroughness); <= 0.001 is smooth
+    float roughness = 0.001f;     // GGX alpha (specularroughness, or Pr^2); <= 0.001 is smooth
     float metallic = -1.0f;       // Pm in [0, 1], applied when the material is evaluated; < 0: not given
     Spectrum emission{0.0f};      // emitted radiance, both sides (Ke, emittance)
 
