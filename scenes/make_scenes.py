@@ -186,7 +186,41 @@ def mis_lights():
                 "\treflat0deg 1.0\n\treflat90deg 1.0\n")
 
 
+ROUGH_ALPHAS = (0.01, 0.05, 0.2, 0.5)
+
+
+def rough():
+    o = Obj()
+    room(o)
+    rows = (("Metal", 0.5), ("Plastic", 0.0), ("Glass", -0.5))  # (material family, height)
+    for family, y in rows:
+        for k, alpha in enumerate(ROUGH_ALPHAS):
+            o.use("%s%d" % (family, k))
+            o.sphere((-0.66 + 0.44 * k, y, -0.3), 0.19, rings=24, segments=48)
+    o.write(os.path.join(HERE, "rough.obj"), "rough.mtl",
+            "Rough metal, plastic and glass at alpha 0.01, 0.05, 0.2 and 0.5 under a small sphere light")
+    with open(os.path.join(HERE, "rough.mtl"), "w") as f:
+        f.write("# Rows from the top: metal (Pm 1), plastic (a Fresnel-blended Lambert), glass; columns\n"
+                "# from the left: specularroughness (GGX alpha) 0.01, 0.05, 0.2, 0.5.\n\n")
+        f.write("newlight Lamp\n\tlightposition 0.0 0.7 0.7\n\tlightcolor 1.0 0.95 0.85\n"
+                "\tlightradius 0.06\n\tlightintensity 2.0\n\n")
+        f.write(CAMERA + "\n")
+        f.write("newmtl Floor\n\tKd 0.7 0.7 0.7\n\n")
+        f.write("newmtl Ceiling\n\tKd 0.8 0.8 0.8\n\n")
+        f.write("newmtl BackWall\n\tKd 0.6 0.6 0.6\n\n")
+        f.write("newmtl LeftWall\n\tKd 0.65 0.25 0.2\n\n")
+        f.write("newmtl RightWall\n\tKd 0.2 0.3 0.65\n\n")
+        for k, alpha in enumerate(ROUGH_ALPHAS):
+            f.write("newmtl Metal%d\n\tKd 0 0 0\n\tKs 0.95 0.75 0.45\n\tNi 1.5\n\tPm 1.0\n"
+                    "\tspecularroughness %g\n\n" % (k, alpha))
+            f.write("newmtl Plastic%d\n\tKd 0.6 0.15 0.1\n\treflat0deg 0.05\n\treflat90deg 1.0\n"
+                    "\tspecularroughness %g\n\n" % (k, alpha))
+            f.write("newmtl Glass%d\n\tKs 1 1 1\n\treflat0deg 0.04\n\treflat90deg 1.0\n\tTr 1.0\n"
+                    "\tNi 1.5\n\tspecularroughness %g\n\n" % (k, alpha))
+
+
 if __name__ == "__main__":
     cornell_box()
     glass()
     mis_lights()
+    rough()
