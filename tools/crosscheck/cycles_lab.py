@@ -135,8 +135,11 @@ def lab_material(name, m):
     if m["w"] > 0:
         # f = w F Spec(Ks) + (1 - w F) B1, F = R0 + (1 - R0)(1 - |cos|)^5.
         spec = node(tree, "ShaderNodeBsdfGlossy", Color=(*m["ks"], 1.0), Roughness=0.0)
-        f = math_node(tree, "MULTIPLY_ADD", math_node(tree, "POWER", one_minus_cos, 5.0), 1.0 - m["r0"])
-        f.node.inputs[2].default_value = m["r0"]
+        if max(m["r0"]) - min(m["r0"]) > 1e-6 or m["alpha"] > 0.001:
+            fail("a coloured R0 or a rough lobe is outside what the Cycles check models")
+        r0 = m["r0"][0]
+        f = math_node(tree, "MULTIPLY_ADD", math_node(tree, "POWER", one_minus_cos, 5.0), 1.0 - r0)
+        f.node.inputs[2].default_value = r0
         wf = math_node(tree, "MULTIPLY", f, m["w"])
         shader = mix_shader(tree, wf, b1, spec.outputs[0])
     link(shader, out.inputs["Surface"])

@@ -27,8 +27,8 @@ def parse_mtl(path):
         key, vals = t[0].lower(), t[1:]
         num = lambda: [float(v) for v in vals]
         if key == "newmtl":
-            cur = {"kd": [0.7] * 3, "ks": [1.0] * 3, "r0": 0.0, "w": 0.0, "t": 0.0, "eta": 1.0, "pm": None,
-                   "map_kd": None}
+            cur = {"kd": [0.7] * 3, "ks": [1.0] * 3, "r0": [0.0] * 3, "w": 0.0, "t": 0.0, "eta": 1.0, "pm": None,
+                   "map_kd": None, "alpha": 0.001}
             materials[vals[0]] = cur
         elif key == "newlight":
             cur = {"pos": None, "color": [1, 1, 1], "radius": 0.0, "intensity": 1.0}
@@ -41,7 +41,8 @@ def parse_mtl(path):
         elif key in ("ks", "specularreflectance"):
             cur["ks"] = num()
         elif key == "reflat0deg":
-            cur["r0"] = num()[0]
+            r0 = num()
+            cur["r0"] = r0 * 3 if len(r0) == 1 else r0
         elif key == "reflat90deg":
             cur["w"] = num()[0]
         elif key in ("transparency", "tr"):
@@ -54,9 +55,10 @@ def parse_mtl(path):
             cur["pm"] = num()[0]
         elif key in ("map_kd", "diffusereflectancemap"):
             cur["map_kd"] = os.path.join(os.path.dirname(path), vals[-1])
-        elif key == "specularroughness":
-            if num()[0] > 0.001:
-                fail(f"{path}:{lineno}: rough lobes are outside what this check models")
+        elif key == "specularroughness":  # GGX alpha, as is
+            cur["alpha"] = num()[0]
+        elif key == "pr":  # perceptual roughness: alpha = Pr^2
+            cur["alpha"] = num()[0] ** 2
         elif key == "lightposition":
             cur["pos"] = num()
         elif key == "lightcolor":
@@ -75,9 +77,7 @@ def parse_mtl(path):
         if m["pm"] is not None:
             f0 = ((m["eta"] - 1) / (m["eta"] + 1)) ** 2
             r0 = [f0 + (k - f0) * m["pm"] for k in m["ks"]]
-            if max(r0) - min(r0) > 1e-6:
-                fail("a coloured R0 is outside what this check models")
-            m.update(r0=r0[0], w=1.0, ks=[1.0] * 3, kd=[k * (1 - m["pm"]) for k in m["kd"]])
+            m.update(r0=r0, w=1.0, ks=[1.0] * 3, kd=[k * (1 - m["pm"]) for k in m["kd"]])
     return materials, lights, cameras
 
 

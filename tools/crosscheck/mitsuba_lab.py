@@ -7,8 +7,9 @@ view and a box pixel filter, and the lab material tree as a Mitsuba BSDF written
 
     f  = w * FresnelBlend(R0)[Spec(Ks), B1] + (1 - w) * B1,  B1 = T * Refr(eta) + (1 - T) * Lambert(Kd)
 
-with Schlick's F = R0 + (1 - R0)(1 - |cos|)^5. Only what the three lab scenes use is read; any
-other keyword stops the script rather than being rendered differently from pt.
+with Schlick's F = R0 + (1 - R0)(1 - |cos|)^5, and the rough Spec and Refr lobes of issue 11 with
+Mitsuba's GGX distribution. Only what the scenes use is read; any other keyword stops the script
+rather than being rendered differently from pt.
 
 The image is the mean of PASSES independent renders; the spread between passes gives the
 variance of that mean, written as the `variance` layer pt diff reads. Run it with
@@ -33,29 +34,51 @@ mi.set_variant("llvm_ad_rgb")
 
 # ---------------------------------------------------------------- the lab BSDF
 class LabBsdf(mi.BSDF):
-    """The lab tree with gray lobe weights; two-sided: the frame is mirrored to wi's side."""
+    """The lab tree; two-sided: the frame is mirrored to wi's side.
+
+    Lobe weights per channel: Spec w F Ks, Refr (1 - w F) T, Lambert (1 - w F)(1 - T) Kd, one lobe
+    picked in proportion to its mean weight. With alpha > 0.001 Spec and Refr are GGX lobes with
+    Mitsuba's own microfacet distribution (separable Smith G, visible-normal sampling), as issue
+    11 defines them: Spec f cos = Ks D G / (4 cos_view); Refr per microfacet m refracts with
+    throughput 1 (Walter et al. eq. 21 with F = 0) or, where m totally reflects, reflects with 1.
+    """
 
     def __init__(self, props):
         mi.BSDF.__init__(self, props)
         self.kd = mi.Color3f(props["kd_r"], props["kd_g"], props["kd_b"])
         self.ks = mi.Color3f(props["ks_r"], props["ks_g"], props["ks_b"])
-        self.r0, self.w, self.t, self.eta = props["r0"], props["w"], props["t"], props["eta"]
+        self.r0 = mi.Color3f(props["r0_r"], props["r0_g"], props["r0_b"])
+        self.w, self.t, self.eta = props["w"], props["t"], props["eta"]
+        self.alpha = props["alpha"]
+        self.rough = self.alpha > 0.001
+        self.distr = mi.MicrofacetDistribution(mi.MicrofacetType.GGX, self.alpha, True) if self.rough else None
         self.kd_map = props["kd_map"] if "kd_map" in props else None
         self.pt_normals = bool(props["pt_normals"])
         both = mi.BSDFFlags.FrontSide | mi.BSDFFlags.BackSide
-        self.m_components = [mi.BSDFFlags.DeltaReflection | both,
-                             mi.BSDFFlags.DeltaTransmission | mi.BSDFFlags.DeltaReflection | both,
-                             mi.BSDFFlags.DiffuseReflection | both]
-        flags = mi.BSDFFlags.DeltaReflection | both
+        if self.rough:
+            spec = mi.BSDFFlags.GlossyReflection | both
+            refr = mi.BSDFFlags.GlossyTransmission | mi.BSDFFlags.GlossyReflection | both
+        else:
+            spec = mi.BSDFFlags.DeltaReflection | both
+            refr = mi.BSDFFlags.DeltaTransmission | mi.BSDFFlags.DeltaReflection | both
+        self.m_components = [spec, refr, mi.BSDFFlags.DiffuseReflection | both]
+        flags = spec
         if self.t > 0:
-            flags |= mi.BSDFFlags.DeltaTransmission
+            flags |= refr
         if self.t < 1:
             flags |= mi.BSDFFlags.DiffuseReflection
         self.m_flags = flags
 
-    def lobe_probs(self, cos_i):
+    def lobes(self, si, cos_i, active):
+        """Per-channel lobe weights and the probabilities of picking each lobe."""
         f = self.w * (self.r0 + (1 - self.r0) * dr.power(1 - cos_i, 5))
-        return f, (1 - f) * self.t, (1 - f) * (1 - self.t)
+        spec = f * self.ks
+        refr = (1 - f) * self.t
+        diff = (1 - f) * (1 - self.t) * self.kd_at(si, active)
+        mean = lambda c: (c.x + c.y + c.z) / 3
+        total = mean(spec) + mean(refr) + mean(diff)
+        safe = dr.select(total > 0, total, 1.0)
+        return spec, refr, diff, mean(spec) / safe, mean(refr) / safe, mean(diff) / safe
 
     def kd_at(self, si, active):
         return self.kd if self.kd_map is None else self.kd * self.kd_map.eval(si, active)
@@ -81,28 +104,75 @@ class LabBsdf(mi.BSDF):
     def consistent(self, w_local, w_frame_z, ng):
         return ~mi.Bool(self.pt_normals) | ((dr.dot(w_local, ng) > 0) == (w_frame_z > 0))
 
+    def glossy(self, wi, wo, eta_rel, spec, refr, p_spec, p_refr):
+        """f cos and pdf of the rough lobes, on the viewer's side (wi.z > 0, wo flipped with it)."""
+        d = self.distr
+        # Reflection: the half vector; Refr's share only where m totally reflects wi.
+        h = dr.normalize(wi + wo)
+        c_h = dr.dot(wi, h)
+        tir_h = (1 - c_h * c_h) >= eta_rel * eta_rel
+        g_r = d.eval(h) * d.G(wi, wo, h) / (4 * wi.z)
+        pdf_r = d.pdf(wi, h) / (4 * dr.abs(dr.dot(wo, h)))
+        refl = (wo.z > 0) & (h.z > 0)
+        f_refl = spec * g_r + dr.select(tir_h, refr * g_r, 0.0)
+        p_refl = (p_spec + dr.select(tir_h, p_refr, 0.0)) * pdf_r
+        # Transmission: the generalized half vector -(wi + eta wo), on the normal's side.
+        ht = dr.normalize(-(wi + eta_rel * wo))
+        ht = dr.select(ht.z < 0, -ht, ht)
+        im, om = dr.dot(wi, ht), dr.dot(wo, ht)
+        denom = im + eta_rel * om
+        trans = (wo.z < 0) & (im > 0) & (om < 0) & (self.t > 0)
+        f_tr = refr * (d.eval(ht) * d.G(wi, wo, ht) * im * -om / (wi.z * denom * denom))
+        p_tr = p_refr * d.pdf(wi, ht) * eta_rel * eta_rel * -om / (denom * denom)
+        f = dr.select(refl, f_refl, dr.select(trans, f_tr, 0.0))
+        pdf = dr.select(refl, p_refl, dr.select(trans, p_tr, 0.0))
+        return f, dr.select(dr.isfinite(pdf), pdf, 0.0)
+
     def sample(self, ctx, si, sample1, sample2, active):
         frame, ng = self.frame(si)
         wi = frame.to_local(si.wi)
         side = dr.select(wi.z >= 0, 1.0, -1.0)
         cos_i = dr.abs(wi.z)
-        p_spec, p_refr, p_diff = self.lobe_probs(cos_i)
+        spec, refr, diff, p_spec, p_refr, p_diff = self.lobes(si, cos_i, active)
         pick_spec = sample1 < p_spec
         pick_refr = ~pick_spec & (sample1 < p_spec + p_refr)
         pick_diff = ~pick_spec & ~pick_refr
+        eta_rel = dr.select(wi.z >= 0, self.eta, 1.0 / self.eta)
+        diffuse = mi.warp.square_to_cosine_hemisphere(sample2)
+        diffuse = mi.Vector3f(diffuse.x, diffuse.y, side * diffuse.z)
+        bs = dr.zeros(mi.BSDFSample3f)
+
+        if self.rough:
+            wi_u = mi.Vector3f(wi.x, wi.y, cos_i)
+            m, _ = self.distr.sample(wi_u, sample2)
+            c = dr.dot(wi_u, m)
+            sin2_t = (1 - c * c) / (eta_rel * eta_rel)
+            tir = sin2_t >= 1
+            reflected = 2 * c * m - wi_u
+            refracted = (c / eta_rel - dr.sqrt(dr.maximum(0.0, 1 - sin2_t))) * m - wi_u / eta_rel
+            wo_u = dr.select(pick_spec | (pick_refr & tir), reflected,
+                             dr.select(pick_refr, refracted, mi.Vector3f(diffuse.x, diffuse.y, dr.abs(diffuse.z))))
+            wo = mi.Vector3f(wo_u.x, wo_u.y, side * wo_u.z)
+            f, pdf = self.mixture(si, wi_u, wo_u, eta_rel, spec, refr, diff, p_spec, p_refr, p_diff)
+            bs.wo = frame.to_world(wo)
+            bs.pdf = pdf
+            transmitted = wo_u.z < 0
+            bs.eta = dr.select(transmitted, eta_rel, 1.0)
+            bs.sampled_type = dr.select(pick_diff, mi.UInt32(+mi.BSDFFlags.DiffuseReflection),
+                                        dr.select(transmitted, mi.UInt32(+mi.BSDFFlags.GlossyTransmission),
+                                                  mi.UInt32(+mi.BSDFFlags.GlossyReflection)))
+            bs.sampled_component = dr.select(pick_spec, mi.UInt32(0), dr.select(pick_refr, mi.UInt32(1), mi.UInt32(2)))
+            valid_side = dr.select(pick_spec | (pick_refr & tir) | pick_diff, wo_u.z > 0, wo_u.z < 0)
+            ok = active & (wi.z != 0) & (pdf > 0) & valid_side & self.consistent(bs.wo, wo.z, ng)
+            return bs, dr.select(ok, f / dr.select(pdf > 0, pdf, 1.0), 0.0)
 
         mirror = mi.Vector3f(-wi.x, -wi.y, wi.z)
         # Refraction: entering when wi is on the normal's side; TIR reflects with reflectance 1.
-        eta_rel = dr.select(wi.z >= 0, self.eta, 1.0 / self.eta)
         sin2_t = (1 - cos_i * cos_i) / (eta_rel * eta_rel)
         tir = sin2_t >= 1
         cos_t = dr.sqrt(dr.maximum(0.0, 1 - sin2_t))
         refracted = mi.Vector3f(-wi.x / eta_rel, -wi.y / eta_rel, -side * cos_t)
-        diffuse = mi.warp.square_to_cosine_hemisphere(sample2)
-        diffuse = mi.Vector3f(diffuse.x, diffuse.y, side * diffuse.z)
-
         wo = dr.select(pick_spec | (pick_refr & tir), mirror, dr.select(pick_refr, refracted, diffuse))
-        bs = dr.zeros(mi.BSDFSample3f)
         bs.wo = frame.to_world(wo)
         bs.pdf = dr.select(pick_spec, p_spec, dr.select(pick_refr, p_refr, p_diff * dr.abs(diffuse.z) / math.pi))
         bs.eta = dr.select(pick_refr & ~tir, eta_rel, 1.0)
@@ -111,28 +181,42 @@ class LabBsdf(mi.BSDF):
                                               dr.select(pick_refr, mi.UInt32(+mi.BSDFFlags.DeltaReflection),
                                                         mi.UInt32(+mi.BSDFFlags.DiffuseReflection))))
         bs.sampled_component = dr.select(pick_spec, mi.UInt32(0), dr.select(pick_refr, mi.UInt32(1), mi.UInt32(2)))
-        # value = f cos / pdf: Ks for the mirror, the radiance scale for refraction, Kd for Lambert.
-        refr_weight = dr.select(tir, 1.0, 1.0 / (eta_rel * eta_rel))
-        value = dr.select(pick_spec, self.ks, dr.select(pick_refr, mi.Color3f(refr_weight), self.kd_at(si, active)))
+        # value = lobe weight over its probability, times the radiance scale for refraction.
+        safe = lambda p: dr.select(p > 0, p, 1.0)
+        refr_scale = dr.select(tir, 1.0, 1.0 / (eta_rel * eta_rel))
+        value = dr.select(pick_spec, spec / safe(p_spec),
+                          dr.select(pick_refr, refr * refr_scale / safe(p_refr), diff / safe(p_diff)))
         ok = active & (wi.z != 0) & (bs.pdf > 0) & ~(pick_diff & (diffuse.z == 0)) & self.consistent(bs.wo, wo.z, ng)
         return bs, dr.select(ok, value, 0.0)
 
-    def diffuse_part(self, si, wo):
-        """The Lambert lobe's probability and cosine for wo, zero where no path can use it."""
-        frame, ng = self.frame(si)
-        wi, wo_f = frame.to_local(si.wi), frame.to_local(wo)
-        _, _, p_diff = self.lobe_probs(dr.abs(wi.z))
-        usable = (wi.z * wo_f.z > 0) & self.consistent(wo, wo_f.z, ng)
-        return dr.select(usable, p_diff * dr.abs(wo_f.z) / math.pi, 0.0)
-
-    def eval(self, ctx, si, wo, active):
-        return dr.select(active, self.kd_at(si, active) * self.diffuse_part(si, wo), 0.0)
-
-    def pdf(self, ctx, si, wo, active):
-        return dr.select(active, self.diffuse_part(si, wo), 0.0)
+    def mixture(self, si, wi_u, wo_u, eta_rel, spec, refr, diff, p_spec, p_refr, p_diff):
+        """f cos and pdf of every non-delta lobe together, on the viewer's side."""
+        lambert = wo_u.z > 0
+        f = dr.select(lambert, diff * wo_u.z / math.pi, 0.0)
+        pdf = dr.select(lambert, p_diff * wo_u.z / math.pi, 0.0)
+        if self.rough:
+            fg, pg = self.glossy(wi_u, wo_u, eta_rel, spec, refr, p_spec, p_refr)
+            f, pdf = f + fg, pdf + pg
+        return f, pdf
 
     def eval_pdf(self, ctx, si, wo, active):
-        return self.eval(ctx, si, wo, active), self.pdf(ctx, si, wo, active)
+        frame, ng = self.frame(si)
+        wi, wo_f = frame.to_local(si.wi), frame.to_local(wo)
+        side = dr.select(wi.z >= 0, 1.0, -1.0)
+        cos_i = dr.abs(wi.z)
+        spec, refr, diff, p_spec, p_refr, p_diff = self.lobes(si, cos_i, active)
+        eta_rel = dr.select(wi.z >= 0, self.eta, 1.0 / self.eta)
+        wi_u = mi.Vector3f(wi.x, wi.y, cos_i)
+        wo_u = mi.Vector3f(wo_f.x, wo_f.y, side * wo_f.z)
+        f, pdf = self.mixture(si, wi_u, wo_u, eta_rel, spec, refr, diff, p_spec, p_refr, p_diff)
+        usable = active & (wi.z != 0) & self.consistent(wo, wo_f.z, ng)
+        return dr.select(usable, f, 0.0), dr.select(usable, pdf, 0.0)
+
+    def eval(self, ctx, si, wo, active):
+        return self.eval_pdf(ctx, si, wo, active)[0]
+
+    def pdf(self, ctx, si, wo, active):
+        return self.eval_pdf(ctx, si, wo, active)[1]
 
     def to_string(self):
         return "LabBsdf"
@@ -184,12 +268,12 @@ def build_scene(obj_path, camera_index, width, height, max_depth, pt_normals, tm
         m = materials.get(name) or fail(f"usemtl {name!r} names no material")
         ply = os.path.join(tmp, f"group{k}.ply")
         write_ply(ply, pos, nrm, uv)
-        bsdf = {"type": "lab", "r0": m["r0"], "w": m["w"], "t": m["t"], "eta": m["eta"], "pt_normals": pt_normals}
+        bsdf = {"type": "lab", "w": m["w"], "t": m["t"], "eta": m["eta"], "alpha": m["alpha"], "pt_normals": pt_normals}
         if m["map_kd"]:  # an sRGB texture, bilinear, repeating
             bsdf["kd_map"] = {"type": "bitmap", "filename": m["map_kd"], "raw": False,
                               "filter_type": "bilinear", "wrap_mode": "repeat"}
-        for c, kd, ks in zip("rgb", m["kd"], m["ks"]):
-            bsdf[f"kd_{c}"], bsdf[f"ks_{c}"] = kd, ks
+        for c, kd, ks, r0 in zip("rgb", m["kd"], m["ks"], m["r0"]):
+            bsdf[f"kd_{c}"], bsdf[f"ks_{c}"], bsdf[f"r0_{c}"] = kd, ks, r0
         scene[f"shape{k}"] = {"type": "ply", "filename": ply, "face_normals": False, "bsdf": bsdf}
     return mi.load_dict(scene)
 
