@@ -52,6 +52,41 @@ struct ChiSquareResult {
     std::string report;
 };
 
+// The statistic over counts whose last bin is "no sample": bins expected below 5 are pooled so
+// that the chi-square approximation holds, and a pool holding far more samples than expected is
+// a failure by itself. More than `minDof` degrees of freedom are required (a sampler whose
+// every sample is a delta lobe has none). `total` is the integral of the pdf, for the report.
+inline ChiSquareResult chiSquareOfCounts(const std::vector<double>& observed, const std::vector<double>& expected,
+                                         double total, int samples, double pAlpha, int minDof = -1) {
+    ChiSquareResult result;
+    std::ostringstream report;
+    double chi2 = 0.0, pooledObs = 0.0, pooledExp = 0.0;
+    int dof = -1;
+    for (size_t i = 0; i < expected.size(); ++i) {
+        if (expected[i] < 5.0) {
+            pooledObs += observed[i];
+            pooledExp += expected[i];
+            continue;
+        }
+        chi2 += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
+        ++dof;
+    }
+    if (pooledExp >= 5.0) {
+        chi2 += (pooledObs - pooledExp) * (pooledObs - pooledExp) / pooledExp;
+        ++dof;
+    } else if (pooledObs > 5.0 * std::max(1.0, pooledExp) + 10.0) {
+        report << "pooled low-density bins hold " << pooledObs << " samples, expected " << pooledExp;
+        result.report = report.str();
+        return result;
+    }
+    result.pValue = dof > 0 ? chiSquareSurvival(chi2, dof) : 1.0;
+    result.pass = result.pValue > pAlpha && dof > minDof;
+    report << "chi2 = " << chi2 << ", dof = " << dof << ", p = " << result.pValue << ", integral of pdf = " << total
+           << ", no-sample fraction observed " << observed.back() / samples;
+    result.report = report.str();
+    return result;
+}
+
 // `sample(u, dir)` draws one direction from two uniform numbers; it returns false when it
 // produces nothing that the pdf describes (a delta lobe, an absorbed sample). `pdf(dir)` is the
 // claimed solid-angle density; its integral may be below 1, the rest counts as "no sample".
@@ -119,32 +154,7 @@ inline ChiSquareResult chiSquareDirections(const std::function<bool(Vec2, Vec3&)
             result.report = report.str();
             return result;
         }
-    // Pool bins with small expectations so the chi-square approximation holds.
-    double chi2 = 0.0, pooledObs = 0.0, pooledExp = 0.0;
-    int dof = -1;
-    for (int i = 0; i <= bins; ++i) {
-        if (expected[i] < 5.0) {
-            pooledObs += observed[i];
-            pooledExp += expected[i];
-            continue;
-        }
-        chi2 += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
-        ++dof;
-    }
-    if (pooledExp >= 5.0) {
-        chi2 += (pooledObs - pooledExp) * (pooledObs - pooledExp) / pooledExp;
-        ++dof;
-    } else if (pooledObs > 5.0 * std::max(1.0, pooledExp) + 10.0) {
-        report << "pooled low-density bins hold " << pooledObs << " samples, expected " << pooledExp;
-        result.report = report.str();
-        return result;
-    }
-    result.pValue = dof > 0 ? chiSquareSurvival(chi2, dof) : 1.0;
-    result.pass = result.pValue > alpha;
-    report << "chi2 = " << chi2 << ", dof = " << dof << ", p = " << result.pValue << ", integral of pdf = " << total
-           << ", no-sample fraction observed " << observed[bins] / samples;
-    result.report = report.str();
-    return result;
+    return chiSquareOfCounts(observed, expected, total, samples, alpha);
 }
 
 // Chi-square test of a sampler of microfacet lobes in the space of their half vectors m (unit,
@@ -234,41 +244,16 @@ inline ChiSquareResult chiSquareHalfVectors(const std::function<bool(float, Vec2
                 total += v;
             }
     expected[bins] = std::max(0.0, 1.0 - total) * samples;
-    ChiSquareResult result;
-    std::ostringstream report;
-    double chi2 = 0, pooledE = 0, pooledO = 0;
-    int dof = -1;
-    for (int b = 0; b <= bins; ++b) {
-        // A few samples may land in a bin whose sub-cells all miss a sliver of support (at the
-        // horizon, at a cut-off); more is a sample where the density is zero.
-        if (expected[b] == 0.0 && observed[b] > 3 && b < bins) {
-            report << "side " << b / perSide << " bin " << b % perSide << ": " << observed[b]
-                   << " samples where the pdf is 0";
-            result.report = report.str();
+    // A few samples may land in a bin whose sub-cells all miss a sliver of support (at the
+    // horizon, at a cut-off); more is a sample where the density is zero.
+    for (int b = 0; b < bins; ++b)
+        if (expected[b] == 0.0 && observed[b] > 3) {
+            ChiSquareResult result;
+            result.report = "side " + std::to_string(b / perSide) + " bin " + std::to_string(b % perSide) + ": " +
+                            std::to_string(observed[b]) + " samples where the pdf is 0";
             return result;
         }
-        if (expected[b] < 5.0) {
-            pooledE += expected[b];
-            pooledO += observed[b];
-            continue;
-        }
-        chi2 += (observed[b] - expected[b]) * (observed[b] - expected[b]) / expected[b];
-        ++dof;
-    }
-    if (pooledE >= 5.0) {
-        chi2 += (pooledO - pooledE) * (pooledO - pooledE) / pooledE;
-        ++dof;
-    } else if (pooledO > 5.0 * std::max(1.0, pooledE) + 10.0) {
-        report << "pooled low-density bins hold " << pooledO << " samples, expected " << pooledE;
-        result.report = report.str();
-        return result;
-    }
-    result.pValue = dof > 0 ? chiSquareSurvival(chi2, dof) : 1.0;
-    result.pass = result.pValue > pAlpha && dof > 10;
-    report << "chi2 = " << chi2 << ", dof = " << dof << ", p = " << result.pValue << ", integral of pdf = " << total
-           << ", no-sample fraction observed " << observed[bins] / samples;
-    result.report = report.str();
-    return result;
+    return chiSquareOfCounts(observed, expected, total, samples, pAlpha, 10);
 }
 
 } // namespace pt::test
