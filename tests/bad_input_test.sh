@@ -144,7 +144,7 @@ truncate -s 2G sparse.mtl
 printf 'mtllib sparse.mtl\n%sf 1 2 3\n' "$tri" > sparse.obj
 start=$(date +%s%N)
 check sparse_2GB_mtl 1 "sparse.mtl:1: contains a NUL byte" $(render sparse.obj sparse)
-(( ($(date +%s%N) - start) / 1000000 < 3000 )) || fail "sparse_2GB_mtl: took more than 3 s to refuse"
+(( ($(date +%s%N) - start) / 1000000 < 10000 )) || fail "sparse_2GB_mtl: took more than 10 s to refuse (18 s when it read the whole file)"
 truncate -s 8G sparse.mtl
 check sparse_8GB_mtl 1 "sparse.mtl:1: contains a NUL byte" $(render sparse.obj sparse8)
 rm -f sparse.mtl

@@ -33,7 +33,7 @@ TEST(Mtl, Defaults) {
     Parsed p = parse("newmtl Plain\n");
     const Material& m = p.material("Plain");
     EXPECT_EQ(m.kd, Spectrum(0.7f));
-    EXPECT_EQ(m.kdTexture, -1);
+    EXPECT_FALSE(m.kdMap.used());
     EXPECT_EQ(m.ks, Spectrum(1.0f));
     EXPECT_EQ(m.r0, Spectrum(0.0f));
     EXPECT_EQ(m.blend, 0.0f);
@@ -139,15 +139,15 @@ TEST(Mtl, TextureLoadsAndMissingTextureWarns) {
     Parsed ok = parse("newmtl T\nmap_Kd " PT_SOURCE_DIR "/scenes/checker.png\n"
                       "newmtl U\ndiffuseReflectanceMap " PT_SOURCE_DIR "/scenes/checker.png\n");
     ASSERT_EQ(ok.scene.textures.size(), 1u); // loaded once, shared
-    EXPECT_EQ(ok.material("T").kdTexture, 0);
-    EXPECT_EQ(ok.material("U").kdTexture, 0);
+    EXPECT_EQ(ok.material("T").kdMap.texture, 0);
+    EXPECT_EQ(ok.material("U").kdMap.texture, 0);
     const Texture& t = ok.scene.textures[0];
     EXPECT_EQ(t.width, 128);
     // The checker's bright squares are sRGB 0.9 (linear 0.787).
     EXPECT_NEAR(t.texels[0].x, 0.787f, 0.01f);
 
     Parsed missing = parse("newmtl T\nmap_Kd nothere.png\n");
-    EXPECT_EQ(missing.material("T").kdTexture, -1);
+    EXPECT_FALSE(missing.material("T").kdMap.used());
     ASSERT_EQ(missing.warnings.messages().size(), 1u);
     EXPECT_NE(missing.warnings.messages()[0].find("test.mtl:2: map_Kd: texture \"/nowhere/nothere.png\" not found"), std::string::npos)
         << missing.warnings.messages()[0];

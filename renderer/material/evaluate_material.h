@@ -16,7 +16,7 @@ template <typename UvAtHit>
 inline LabBsdf evaluateMaterial(const Material& m, const std::vector<Texture>& textures, UvAtHit&& uvAtHit,
                                 float cosThetaO, HemisphereSampling hemisphere) {
     Spectrum kd = m.kd;
-    if (m.kdTexture >= 0) kd *= lookupTexture(textures[size_t(m.kdTexture)], uvAtHit());
+    if (m.kdMap.used()) kd *= lookupTexture(textures, m.kdMap, uvAtHit());
     return LabBsdf::make(labParameters(m, kd), cosThetaO, hemisphere);
 }
 

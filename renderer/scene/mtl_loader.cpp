@@ -3,6 +3,7 @@
 #include "texture/texture_io.h"
 #include "scene/text_parser.h"
 
+#include <charconv>
 #include <filesystem>
 #include <optional>
 
@@ -54,7 +55,7 @@ struct MtlParser {
     Spectrum nonNegativeColor(Tokens& t, std::string_view keyword);
     Spectrum reflectance(Tokens& t, std::string_view keyword);
     float unitInterval(Tokens& t, std::string_view keyword);
-    int loadTexture(std::string_view spec, std::string_view keyword, const LineReader& lines);
+    TextureMap loadTexture(std::string_view spec, std::string_view keyword, const LineReader& lines);
 };
 
 void MtlParser::requireBlock(Block wanted, std::string_view keyword, const Tokens& t) const {
@@ -98,18 +99,62 @@ float MtlParser::unitInterval(Tokens& t, std::string_view keyword) {
     return v;
 }
 
-int MtlParser::loadTexture(std::string_view spec, std::string_view keyword, const LineReader& lines) {
+// A map line: options, then the file name, which is the rest of the line and may hold spaces.
+// -s and -o take one to three numbers (u, v, w; w is for 3D textures and ignored), -clamp on|off.
+// Other options of the OBJ format (-blendu, -blendv, -boost, -mm, -t, -texres, -cc, -bm,
+// -imfchan, -type) do not change a colour map here: they are skipped with a warning.
+TextureMap MtlParser::loadTexture(std::string_view spec, std::string_view keyword, const LineReader& lines) {
     std::string where = path + ":" + std::to_string(lines.lineNumber()) + ": ";
-    if (spec.empty()) throw LoadError(path, lines.lineNumber(), std::string(keyword) + ": expected a file name");
-    std::string file(spec);
-    if (spec.front() == '-') {
-        // Texture options (-s, -o, -bm, ...) are not supported; the file name is the last token.
-        file = std::string(spec.substr(spec.find_last_of(" \t") + 1));
-        warnings.add(where + std::string(keyword) + ": texture options ignored, using \"" + file + "\"");
+    std::string kw(keyword);
+    TextureMap map;
+    Tokens t(spec, lines);
+    auto numbers = [&](const std::string& option, int most) {
+        std::vector<float> v;
+        while (int(v.size()) < most && !t.empty()) {
+            Tokens probe = t; // peek: the next word may be the file name
+            std::string_view w = probe.word();
+            float x;
+            auto [ptr, ec] = std::from_chars(w.data(), w.data() + w.size(), x);
+            if (ec != std::errc() || ptr != w.data() + w.size()) break;
+            v.push_back(t.number(kw + " " + option));
+        }
+        if (v.empty()) t.fail(kw + " " + option + ": expected a number");
+        return v;
+    };
+    for (;;) {
+        Tokens probe = t;
+        std::string_view w = probe.word();
+        if (w.size() < 2 || w.front() != '-') break;
+        std::string option(w);
+        t.word();
+        if (option == "-s" || option == "-o") {
+            std::vector<float> v = numbers(option, 3);
+            Vec2 uv(v[0], v.size() > 1 ? v[1] : (option == "-s" ? 1.0f : 0.0f));
+            (option == "-s" ? map.scale : map.offset) = uv;
+        } else if (option == "-clamp") {
+            std::string_view onOff = t.word();
+            if (onOff != "on" && onOff != "off") t.fail(kw + " -clamp: expected on or off, found \"" + std::string(onOff) + "\"");
+            map.clamp = onOff == "on";
+        } else if (option == "-blendu" || option == "-blendv" || option == "-cc" || option == "-boost" ||
+                   option == "-texres" || option == "-bm" || option == "-imfchan" || option == "-type") {
+            if (t.word().empty()) t.fail(kw + " " + option + ": expected a value");
+            warnings.once("texopt:" + option, where + kw + ": option " + option + " has no effect on a colour map; ignored");
+        } else if (option == "-mm" || option == "-t") {
+            numbers(option, option == "-mm" ? 2 : 3);
+            warnings.once("texopt:" + option, where + kw + ": option " + option + " has no effect here; ignored");
+        } else {
+            t.fail(kw + ": unknown texture option \"" + option +
+                   "\"; expected -s, -o, -clamp (or -blendu, -blendv, -boost, -mm, -t, -texres, -cc, -bm, -imfchan, -type)");
+        }
     }
+    std::string file(t.restOfLine());
+    if (file.empty()) throw LoadError(path, lines.lineNumber(), kw + ": expected a file name");
     std::filesystem::path full = std::filesystem::path(path).parent_path() / file;
     for (size_t i = 0; i < scene.textures.size(); ++i)
-        if (scene.textures[i].path == full.string()) return int(i);
+        if (scene.textures[i].path == full.string()) {
+            map.texture = int(i);
+            return map;
+        }
     std::string error;
     Texture tex;
     double used = 0.0;
@@ -119,10 +164,11 @@ int MtlParser::loadTexture(std::string_view spec, std::string_view keyword, cons
         // Too large is an error: a render without the texture would be a silently different image.
         if (tooLarge) throw LoadError(where + std::string(keyword) + ": " + error);
         warnings.add(where + std::string(keyword) + ": " + error + "; using the plain colour instead");
-        return -1;
+        return TextureMap{};
     }
     scene.textures.push_back(std::move(tex));
-    return int(scene.textures.size() - 1);
+    map.texture = int(scene.textures.size() - 1);
+    return map;
 }
 
 void MtlParser::finishMaterial() {
@@ -218,7 +264,7 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
         m.kd = reflectance(t, keyword);
     } else if (is("map_Kd") || is("diffuseReflectanceMap")) {
         requireBlock(Block::Material, keyword, t);
-        m.kdTexture = loadTexture(t.restOfLine(), keyword, lines);
+        m.kdMap = loadTexture(t.restOfLine(), keyword, lines);
         return;
     } else if (is("Ks") || is("specularReflectance")) {
         requireBlock(Block::Material, keyword, t);

@@ -42,7 +42,7 @@ struct SphereLight {
 struct Material {
     std::string name;
     Spectrum kd{0.7f};            // Lambert reflectance (Kd, diffuseReflectance)
-    int kdTexture = -1;           // index into Scene::textures, multiplies kd (map_Kd)
+    TextureMap kdMap;             // multiplies kd (map_Kd), with its -s, -o and -clamp options
     Spectrum ks{1.0f};            // mirror colour (Ks, specularReflectance)
     Spectrum r0{0.0f};            // Fresnel reflectance at normal incidence (reflat0deg)
     float blend = 0.0f;           // w, weight of the Fresnel blend (reflat90deg)

@@ -4,6 +4,7 @@
 
 #include "core/math.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -16,15 +17,25 @@ struct Texture {
     std::vector<Spectrum> texels;
 };
 
-// Bilinear lookup with repeat wrapping. v = 0 is the bottom of the image, as in OBJ.
+// How a material uses a texture: the MTL map options that change the lookup.
+struct TextureMap {
+    int texture = -1;               // index into Scene::textures; -1: no map
+    Vec2 scale{1.0f}, offset{0.0f}; // -s and -o: the lookup is at uv * scale + offset
+    bool clamp = false;             // -clamp on: uv outside [0, 1] takes the edge's texels
 
-inline Spectrum lookupTexture(const Texture& tex, Vec2 uv) {
+    bool used() const { return texture >= 0; }
+};
+
+// Bilinear lookup, repeating the image or (clampToEdge) extending its border texels. v = 0 is
+// the bottom of the image, as in OBJ.
+inline Spectrum lookupTexture(const Texture& tex, Vec2 uv, bool clampToEdge = false) {
     float x = uv.x * float(tex.width) - 0.5f;
     float y = (1.0f - uv.y) * float(tex.height) - 0.5f;
     if (!std::isfinite(x) || !std::isfinite(y)) return tex.texels[0];
     float fx = std::floor(x), fy = std::floor(y);
     float tx = x - fx, ty = y - fy;
-    auto wrap = [](float i, int n) {
+    auto wrap = [clampToEdge](float i, int n) {
+        if (clampToEdge) return int(std::clamp(i, 0.0f, float(n - 1)));
         long long k = (long long)std::fmod(i, float(n));
         return int(k < 0 ? k + n : k);
     };
@@ -33,6 +44,13 @@ inline Spectrum lookupTexture(const Texture& tex, Vec2 uv) {
     auto at = [&](int xi, int yi) { return tex.texels[size_t(yi) * tex.width + xi]; };
     return (1.0f - ty) * ((1.0f - tx) * at(x0, y0) + tx * at(x1, y0)) +
            ty * ((1.0f - tx) * at(x0, y1) + tx * at(x1, y1));
+}
+
+// A map's value at a hit's uv, after its -s, -o and -clamp options.
+inline Spectrum lookupTexture(const std::vector<Texture>& textures, const TextureMap& map, Vec2 uv) {
+    uv = uv * map.scale + map.offset;
+    if (map.clamp) uv = glm::clamp(uv, Vec2(0.0f), Vec2(1.0f));
+    return lookupTexture(textures[size_t(map.texture)], uv, map.clamp);
 }
 
 } // namespace pt
