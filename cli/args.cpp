@@ -1,16 +1,11 @@
 #include "cli/args.h"
 
+#include "core/system.h"
+
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 
 namespace pt::cli {
-
-std::string formatNumber(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
 
 Args::Args(int argc, char** argv, int first) {
     for (int i = first; i < argc; ++i) {
@@ -79,8 +74,8 @@ double Args::number(const std::string& option, double lo, double hi) {
     if (ec != std::errc() || ptr != v.data() + v.size() || v.empty() || !std::isfinite(x))
         throw UsageError("option " + spelled(option) + ": expected a finite number, got \"" + v + "\"");
     if (x < lo || x > hi)
-        throw UsageError("option " + spelled(option) + ": " + v + " is out of range [" + formatNumber(lo) + ", " +
-                         formatNumber(hi) + "]");
+        throw UsageError("option " + spelled(option) + ": " + v + " is out of range [" + shortNumber(lo) + ", " +
+                         shortNumber(hi) + "]");
     return x;
 }
 

@@ -37,7 +37,4 @@ private:
     size_t endOfOptions_ = std::string::npos; // index of the first argument after "--"
 };
 
-// A number for a message: "3e+38", "0.5", "1e-12", never a 39-digit expansion.
-std::string formatNumber(double v);
-
 } // namespace pt::cli

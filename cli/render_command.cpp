@@ -3,6 +3,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/console.h"
+#include "core/system.h"
 #include "io/output_file.h"
 #include "image/image_io.h"
 #include "render/renderer.h"
@@ -163,7 +164,7 @@ RenderArgs parseArgs(int argc, char** argv) {
         throw UsageError("--aov needs an .exr output; \"" + r.output + "\" cannot hold extra layers");
     // Film sums (2 x 3 doubles), sample counts and the output copies: about 80 bytes a pixel.
     double bytes = double(r.width) * r.height * 80.0;
-    double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    double physical = physicalMemoryBytes();
     if (physical > 0 && bytes > 0.8 * physical)
         throw UsageError("--res " + std::to_string(r.width) + "x" + std::to_string(r.height) + " needs about " +
                          std::to_string(int(bytes / 1e9)) + " GB, more than this machine's memory");

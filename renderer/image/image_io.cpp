@@ -1,6 +1,7 @@
 #include "image/image_io.h"
 
 #include "core/color.h"
+#include "core/system.h"
 #include "io/output_file.h"
 
 #include <OpenImageIO/filesystem.h>
@@ -14,7 +15,6 @@
 #include <cerrno>
 #include <cstring>
 #include <sys/stat.h>
-#include <unistd.h>
 
 namespace pt {
 
@@ -137,7 +137,7 @@ std::string readImage(const std::string& path, Image& image) {
     if (w <= 0 || h <= 0 || nc <= 0) return "\"" + path + "\": empty image";
     // The file's pixels as float, then their copy into rgb and the layers: twice the bytes.
     double bytes = 2.0 * double(w) * double(h) * double(nc) * sizeof(float);
-    double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    double physical = physicalMemoryBytes();
     if (physical > 0 && bytes > 0.5 * physical)
         return "\"" + path + "\": its header declares " + std::to_string(w) + "x" + std::to_string(h) + " pixels of " +
                std::to_string(nc) + " channels, about " + std::to_string(int(bytes / 1e9 + 0.5)) +

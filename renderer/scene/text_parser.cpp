@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <sys/stat.h>
-#include <unistd.h>
 
 namespace pt {
 
@@ -36,7 +34,7 @@ std::string readTextFile(const std::string& path) {
     if (size_t(in.gcount()) != head.size()) throw LoadError(path + ": read failed");
     if (size_t nul = head.find('\0'); nul != std::string::npos)
         throw LoadError(path, lineOfOffset(head, nul), "contains a NUL byte; expected a text file, not binary data");
-    double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    double physical = physicalMemoryBytes();
     if (physical > 0 && double(st.st_size) > 0.5 * physical)
         throw LoadError(path + ": is " + std::to_string(int(double(st.st_size) / 1e9 + 0.5)) +
                         " GB, more than half this machine's memory; a scene text file must fit in memory");
@@ -171,12 +169,6 @@ Spectrum Tokens::color(std::string_view what) {
 void Tokens::expectEnd(std::string_view keyword) {
     if (!empty())
         fail(std::string(keyword) + ": unexpected " + quoted(word()) + " at the end of the line");
-}
-
-std::string shortNumber(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
 }
 
 bool equalsIgnoreCase(std::string_view a, std::string_view b) {

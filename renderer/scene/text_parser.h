@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/math.h"
+#include "core/system.h"
 #include "scene/load_error.h"
 #include "scene/scene_limits.h"
 
@@ -62,9 +63,6 @@ private:
     std::string_view rest_;
     const LineReader& where_;
 };
-
-// A number for a message: "1e+38", "0.5", not "100000000000000000000000000000000000000.000000".
-std::string shortNumber(double v);
 
 // Case-insensitive ASCII comparison, for MTL keywords.
 bool equalsIgnoreCase(std::string_view a, std::string_view b);

@@ -1,18 +1,18 @@
 #include "texture/texture_io.h"
 
 #include "core/color.h"
+#include "core/system.h"
 
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <unistd.h>
 
 namespace pt {
 
 double textureMemoryBudget() {
-    double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    double physical = physicalMemoryBytes();
     return physical > 0 ? 0.25 * physical : 4e9;
 }
 
