@@ -116,14 +116,10 @@ int diffCommand(int argc, char** argv) {
         }
         if (files.size() != 2) throw UsageError("expected TEST and REFERENCE images, got " + std::to_string(files.size()));
         if (!heatmap.empty() && formatFromPath(heatmap) != ImageFormat::Png) throw UsageError("--heatmap: expected a .png path");
-        for (const std::string* out : {&heatmap, &json}) {
-            if (out->empty()) continue;
-            for (const std::string& in : files)
-                if (sameFile(*out, in))
-                    throw UsageError("output \"" + *out + "\" is also an input (\"" + in + "\"); choose another name");
-        }
-        if (!heatmap.empty() && !json.empty() && sameFile(heatmap, json))
-            throw UsageError("--heatmap and --json name the same file");
+        std::vector<std::string> outputs;
+        for (const std::string& out : {heatmap, json})
+            if (!out.empty()) outputs.push_back(out);
+        if (std::string problem = outputIsInput(outputs, files); !problem.empty()) throw UsageError(problem);
         // Created before any work, so that a folder that refuses them fails now.
         for (auto [path, file] : {std::pair{&heatmap, &heatmapFile}, std::pair{&json, &jsonFile}}) {
             if (path->empty()) continue;
@@ -193,10 +189,7 @@ int diffCommand(int argc, char** argv) {
 
     int status = r.pass ? 0 : 1;
     if (heatmapFile.isOpen()) {
-        std::vector<unsigned char> bytes;
-        std::string error = encodeImage(ImageFormat::Png, heatmapImage(r, reference), bytes);
-        if (error.empty()) error = heatmapFile.commit(bytes.data(), bytes.size());
-        if (!error.empty()) {
+        if (std::string error = writeImage(heatmapFile, heatmapImage(r, reference)); !error.empty()) {
             std::fprintf(err, "pt diff: --heatmap: %s\n", error.c_str());
             status = 2;
         }

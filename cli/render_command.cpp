@@ -268,10 +268,8 @@ void installStopHandlers(std::atomic<bool>& cancel) {
 std::string partialPath(const std::string& output) {
     std::filesystem::path p(output);
     std::string stem = p.stem().string(), tail = ".partial" + p.extension().string();
-    std::string dir = p.parent_path().empty() ? "." : p.parent_path().string();
-    long nameMax = pathconf(dir.c_str(), _PC_NAME_MAX);
-    if (nameMax <= 0) nameMax = 255;
-    if (long(stem.size() + tail.size()) > nameMax) stem.resize(size_t(std::max(1L, nameMax - long(tail.size()))));
+    long longest = maxNameLength(p.parent_path().empty() ? "." : p.parent_path().string());
+    if (long(stem.size() + tail.size()) > longest) stem.resize(size_t(std::max(1L, longest - long(tail.size()))));
     return (p.parent_path() / (stem + tail)).string();
 }
 
@@ -307,15 +305,6 @@ void addMetadata(Image& image, const RenderArgs& args, const Scene& scene, const
     integer("pt:threadsRequested", args.threads);
     integer("pt:threads", threads);
     real("pt:renderSeconds", result.seconds);
-}
-
-// Refuses an output that is also one of the render's inputs: writing it would destroy the input.
-std::string outputIsInput(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
-    for (const std::string& out : outputs)
-        for (const std::string& in : inputs)
-            if (sameFile(out, in))
-                return "output \"" + out + "\" is also an input (\"" + in + "\"); choose another output name";
-    return "";
 }
 
 } // namespace
@@ -420,7 +409,6 @@ int renderCommand(int argc, char** argv) {
     if (args.aovNormal) image.layers.push_back({"normal", {"X", "Y", "Z"}, result.film.normal()});
     if (args.aovDepth) image.layers.push_back({"depth", {"Z"}, result.film.depth()});
     addMetadata(image, args, scene, scene.cameras[cameraIndex].name, result, threads);
-    std::vector<unsigned char> bytes;
 
     if (result.cancelled) {
         // Never replace OUT with a partial image: the finished samples go beside it.
@@ -433,18 +421,14 @@ int renderCommand(int argc, char** argv) {
         image.metadata.push_back(ImageAttribute::integerValue("pt:interrupted", 1));
         OutputFile partialFile;
         std::string error = partialFile.open(partial);
-        if (error.empty()) error = encodeImage(formatFromPath(partial), image, bytes);
-        if (error.empty()) error = partialFile.commit(bytes.data(), bytes.size());
+        if (error.empty()) error = writeImage(partialFile, image);
         if (!error.empty()) std::fprintf(err, "pt: error: interrupted, and the partial image was lost: %s\n", error.c_str());
         else
             std::fprintf(err, "pt: interrupted after %u of %lld spp; wrote them to %s (%s untouched)\n", done,
                          args.spp, partial.c_str(), args.output.c_str());
         return status;
     }
-    std::string error = encodeImage(formatFromPath(args.output), image, bytes);
-    if (!error.empty()) error = "writing \"" + args.output + "\" failed: " + error;
-    if (error.empty()) error = output.commit(bytes.data(), bytes.size());
-    if (!error.empty()) {
+    if (std::string error = writeImage(output, image); !error.empty()) {
         std::fprintf(err, "pt: error: %s\n", error.c_str());
         return 1;
     }

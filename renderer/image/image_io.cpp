@@ -62,7 +62,8 @@ static void addAttributes(OIIO::ImageSpec& spec, const Image& image) {
     }
 }
 
-std::string encodeImage(ImageFormat format, const Image& image, std::vector<unsigned char>& bytes) {
+// Encodes the image in `format` into memory. Returns "" or the error.
+static std::string encodeImage(ImageFormat format, const Image& image, std::vector<unsigned char>& bytes) {
     bytes.clear();
     // The format plugin is picked by a name; the bytes go to memory, and only OutputFile touches
     // the disk, checking every step (OpenImageIO's PNG writer does not report a full disk).
@@ -118,10 +119,13 @@ std::string writeImage(const std::string& path, const Image& image) {
     if (!check.empty()) return check;
     OutputFile file;
     std::string error = file.open(path);
-    if (!error.empty()) return error;
+    return error.empty() ? writeImage(file, image) : error;
+}
+
+std::string writeImage(OutputFile& file, const Image& image) {
     std::vector<unsigned char> bytes;
-    error = encodeImage(formatFromPath(path), image, bytes);
-    if (!error.empty()) return "writing \"" + path + "\" failed: " + error;
+    std::string error = encodeImage(formatFromPath(file.path()), image, bytes);
+    if (!error.empty()) return "writing \"" + file.path() + "\" failed: " + error;
     return file.commit(bytes.data(), bytes.size());
 }
 

@@ -8,6 +8,8 @@
 
 namespace pt {
 
+class OutputFile;
+
 struct ImageLayer {
     std::string name;       // channel prefix: "variance" gives variance.R, variance.G, ...
     std::vector<std::string> channels; // e.g. {"R","G","B"} or {"Z"}
@@ -45,12 +47,11 @@ ImageFormat formatFromPath(const std::string& path);
 // exists and is writable (io/output_file.h). Returns an empty string or the reason it cannot.
 std::string checkOutputPath(const std::string& path);
 
-// Encodes the image in the format of `format` into memory. Returns "" or the error.
-std::string encodeImage(ImageFormat format, const Image& image, std::vector<unsigned char>& bytes);
-
 // Encodes the image and writes it through an OutputFile (io/output_file.h): a failed write never
 // leaves a truncated file or replaces a good one. Returns an empty string or the error.
 std::string writeImage(const std::string& path, const Image& image);
+// Same, into an OutputFile opened earlier (before rendering), in the format of its path.
+std::string writeImage(OutputFile& file, const Image& image);
 
 // Reads an image (any format OpenImageIO knows) into `image`: R, G, B into rgb (grey replicated)
 // and other channels grouped into layers by their "prefix." name; of a multipart EXR, the first

@@ -41,11 +41,6 @@ std::string folderOf(const std::string& path) {
     return dir.empty() ? "." : dir.string();
 }
 
-long nameMax(const std::string& dir) {
-    long n = pathconf(dir.c_str(), _PC_NAME_MAX);
-    return n > 0 ? n : 255;
-}
-
 std::string errnoText() { return std::strerror(errno); }
 
 } // namespace
@@ -64,13 +59,16 @@ std::string checkOutputLocation(const std::string& path) {
     if (access(dir.c_str(), W_OK) != 0) return quoted + ": folder \"" + dir + "\" is not writable";
     std::string name = fs::path(path).filename().string();
     if (name.empty() || name == "." || name == "..") return quoted + ": expected a file name, not a folder";
-    if (long(name.size()) > nameMax(dir))
-        return quoted + ": the name is longer than the file system allows (" + std::to_string(nameMax(dir)) + " bytes)";
-    if (stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) return quoted + " is a folder";
-    if (stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) return quoted + " exists and is not a regular file";
+    long longest = maxNameLength(dir);
+    if (long(name.size()) > longest)
+        return quoted + ": the name is longer than the file system allows (" + std::to_string(longest) + " bytes)";
+    if (stat(path.c_str(), &st) == 0) {
+        if (S_ISDIR(st.st_mode)) return quoted + " is a folder";
+        if (!S_ISREG(st.st_mode)) return quoted + " exists and is not a regular file";
+        return "";
+    }
     struct stat lst {};
-    if (lstat(path.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode) && stat(path.c_str(), &st) != 0)
-        return quoted + " is a symbolic link to a missing file";
+    if (lstat(path.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode)) return quoted + " is a symbolic link to a missing file";
     return "";
 }
 
@@ -80,6 +78,23 @@ bool sameFile(const std::string& a, const std::string& b) {
     std::error_code ea, eb;
     fs::path pa = fs::weakly_canonical(fs::absolute(a, ea), ea), pb = fs::weakly_canonical(fs::absolute(b, eb), eb);
     return !ea && !eb && pa == pb;
+}
+
+long maxNameLength(const std::string& dir) {
+    long n = pathconf(dir.c_str(), _PC_NAME_MAX);
+    return n > 0 ? n : 255;
+}
+
+std::string outputIsInput(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
+    for (size_t i = 0; i < outputs.size(); ++i) {
+        for (const std::string& in : inputs)
+            if (sameFile(outputs[i], in))
+                return "output \"" + outputs[i] + "\" is also an input (\"" + in + "\"); choose another output name";
+        for (size_t j = i + 1; j < outputs.size(); ++j)
+            if (sameFile(outputs[i], outputs[j]))
+                return "outputs \"" + outputs[i] + "\" and \"" + outputs[j] + "\" name the same file";
+    }
+    return "";
 }
 
 std::string OutputFile::open(const std::string& path) {
@@ -102,7 +117,7 @@ std::string OutputFile::open(const std::string& path) {
     std::string pid = std::to_string(getpid());
     // ".out.exr.tmp-PID" names its target; a short name when that would be too long.
     std::string tempName = "." + name + ".tmp-" + pid;
-    if (long(tempName.size()) > nameMax(dir)) tempName = ".pt-tmp-" + pid;
+    if (long(tempName.size()) > maxNameLength(dir)) tempName = ".pt-tmp-" + pid;
     temp_ = (fs::path(dir) / tempName).string();
 
     struct stat old {};
@@ -116,7 +131,7 @@ std::string OutputFile::open(const std::string& path) {
         slot_ = -1;
         return "output \"" + path + "\": cannot create the temporary file \"" + temp_ + "\": " + why;
     }
-    if (stat(target_.c_str(), &old) == 0 && fchmod(fd_, mode) != 0) {
+    if (existed_ && fchmod(fd_, mode) != 0) {
         std::string why = errnoText();
         discard();
         return "output \"" + path + "\": cannot keep the file's mode: " + why;

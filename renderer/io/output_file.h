@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace pt {
 
@@ -50,6 +51,13 @@ std::string checkOutputLocation(const std::string& path);
 // True when `a` and `b` name the same file: the same inode if both exist, else the same
 // absolute path once symbolic links are followed.
 bool sameFile(const std::string& a, const std::string& b);
+
+// "" when no output is the same file as an input (or as another output), else the message that
+// refuses it: writing it would destroy what the command reads.
+std::string outputIsInput(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
+
+// The longest file name the file system of folder `dir` takes (NAME_MAX, 255 if it does not say).
+long maxNameLength(const std::string& dir);
 
 // For a signal handler: unlinks every temporary output file still open. Async-signal-safe.
 void removeTemporaryOutputs();
