@@ -14,26 +14,28 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Temporary files a signal handler may have to remove. Plain arrays with an atomic claim flag:
-// a handler can neither lock nor allocate.
+// Temporary files a signal handler may have to remove. Plain arrays with an atomic state per
+// slot, since a handler can neither lock nor allocate: a slot is claimed, its name written, and
+// only then marked ready, so a handler never unlinks a half-written or stale name.
 constexpr int kSlots = 8;
+enum SlotState : int { kFree, kClaimed, kReady };
 char gTempNames[kSlots][PATH_MAX];
-std::atomic<bool> gTempUsed[kSlots];
+std::atomic<int> gTempState[kSlots];
 
 int registerTemp(const std::string& name) {
     if (name.size() >= PATH_MAX) return -1;
     for (int i = 0; i < kSlots; ++i) {
-        bool expected = false;
-        if (gTempUsed[i].load() || !gTempUsed[i].compare_exchange_strong(expected, true)) continue;
+        int expected = kFree;
+        if (!gTempState[i].compare_exchange_strong(expected, kClaimed)) continue;
         std::memcpy(gTempNames[i], name.c_str(), name.size() + 1);
-        std::atomic_signal_fence(std::memory_order_seq_cst);
+        gTempState[i].store(kReady);
         return i;
     }
     return -1;
 }
 
 void unregisterTemp(int slot) {
-    if (slot >= 0) gTempUsed[slot].store(false);
+    if (slot >= 0) gTempState[slot].store(kFree);
 }
 
 std::string folderOf(const std::string& path) {
@@ -47,7 +49,7 @@ std::string errnoText() { return std::strerror(errno); }
 
 void removeTemporaryOutputs() {
     for (int i = 0; i < kSlots; ++i)
-        if (gTempUsed[i].load()) unlink(gTempNames[i]);
+        if (gTempState[i].load() == kReady) unlink(gTempNames[i]);
 }
 
 std::string checkOutputLocation(const std::string& path) {
