@@ -46,6 +46,11 @@ inline double chiSquareSurvival(double x, double k) {
     return std::exp(lnPrefix) * h;
 }
 
+// The unit direction at polar angle theta from +z and azimuth phi.
+inline Vec3 fromAngles(double theta, double phi) {
+    return Vec3(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)));
+}
+
 struct ChiSquareResult {
     bool pass = false;
     double pValue = 0.0;
@@ -170,9 +175,6 @@ inline ChiSquareResult chiSquareHalfVectors(const std::function<bool(float, Vec2
                                             uint64_t seed = 99) {
     const int na = 24, nphi = 24, perSide = na * nphi, bins = sides * perSide;
     std::vector<double> expected(bins + 1, 0.0), observed(bins + 1, 0.0);
-    auto fromAngles = [](double theta, double phi) {
-        return Vec3(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)));
-    };
     // Midpoint sums of pdf(theta(a)) sin(theta) dtheta/da over sub-cells; a bin that a cut-off of
     // the density crosses (some midpoints zero, some not) is summed again 16 times finer, one over
     // which it varies by more than 3x 8 times finer.

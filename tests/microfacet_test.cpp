@@ -11,10 +11,6 @@ namespace {
 
 constexpr float kAlphas[] = {0.01f, 0.05f, 0.2f, 0.5f, 1.0f};
 
-Vec3 fromAngles(double theta, double phi) {
-    return Vec3(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)));
-}
-
 // Integral over the hemisphere of f(m) dm, on a grid in theta that is dense near the pole
 // (theta = pi/2 x^3), where narrow lobes live.
 template <typename F>

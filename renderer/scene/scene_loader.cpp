@@ -8,7 +8,8 @@
 
 namespace pt {
 
-void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
+// Bounds of the triangles' vertices alone; empty (lo > hi) without triangles.
+static void triangleBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
     lo = Vec3(kInf);
     hi = Vec3(-kInf);
     for (const glm::uvec3& tri : scene.triPositions)
@@ -16,6 +17,10 @@ void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
             lo = glm::min(lo, scene.positions[tri[k]]);
             hi = glm::max(hi, scene.positions[tri[k]]);
         }
+}
+
+void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
+    triangleBounds(scene, lo, hi);
     for (const SphereLight& l : scene.lights) {
         lo = glm::min(lo, l.center - Vec3(l.radius));
         hi = glm::max(hi, l.center + Vec3(l.radius));
@@ -40,12 +45,8 @@ static Camera frameScene(const Scene& scene) {
 
 // The limits of scene/scene_limits.h that depend on the size of the whole scene.
 static void checkSceneLimits(const Scene& scene) {
-    Vec3 lo(kInf), hi(-kInf);
-    for (const glm::uvec3& tri : scene.triPositions)
-        for (int k = 0; k < 3; ++k) {
-            lo = glm::min(lo, scene.positions[tri[k]]);
-            hi = glm::max(hi, scene.positions[tri[k]]);
-        }
+    Vec3 lo, hi;
+    triangleBounds(scene, lo, hi);
     if (lo.x <= hi.x) {
         float size = safeLength(hi - lo);
         if (size < kMinSceneSize)
