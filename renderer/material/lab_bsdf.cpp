@@ -63,52 +63,40 @@ bool totallyReflects(const Vec3& o, const Vec3& m, float etaRel) {
 
 } // namespace
 
-// The rough lobes, on wo's side (o.z > 0): f |cos theta_i| of Spec (per unit Ks weight) and of Refr.
-Spectrum LabBsdf::eval(const Vec3& wo, const Vec3& wi) const {
+// Both values walk the same geometry (the side of wo, the half vector), so one pass gives both.
+Spectrum LabBsdf::evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) const {
     Spectrum f(0.0f);
-    if (pDiffuse > 0.0f && wo.z * wi.z > 0.0f) f += diffuse * (kInvPi * std::abs(wi.z));
+    pdf = 0.0f;
+    if (pDiffuse > 0.0f && wo.z * wi.z > 0.0f) {
+        f += diffuse * (kInvPi * std::abs(wi.z));
+        pdf += pDiffuse * (hemisphere == HemisphereSampling::Cosine ? std::abs(wi.z) * kInvPi : uniformHemispherePdf());
+    }
     if (!rough() || wo.z == 0.0f) return f;
+    // The rough lobes, on wo's side (o.z > 0).
     Side side = sideOf(wo, eta);
     Vec3 o = wo * side.sign, i = wi * side.sign;
     if (i.z > 0.0f) { // reflection: the mirror lobe, and Refr's totally internally reflecting facets
         Vec3 m = safeNormalize(o + i);
         if (m.z <= 0.0f) return f;
-        float g = ggxD(m, alpha) * smithG2Separable(o, i, m, alpha) / (4.0f * o.z);
+        // D and G1(o, m) serve both: f cos = D G1(o) G1(i) / (4 o.z), and the density of the
+        // visible normal, G1(o) (o.m) D / o.z, times the reflection's Jacobian.
+        float d = ggxD(m, alpha), g1o = smithG1(o, m, alpha), om = std::max(0.0f, glm::dot(o, m));
+        float g = d * g1o * smithG1(i, m, alpha) / (4.0f * o.z);
+        bool tir = pRefract > 0.0f && totallyReflects(o, m, side.etaRel);
         if (pMirror > 0.0f) f += mirror * g;
-        if (pRefract > 0.0f && totallyReflects(o, m, side.etaRel)) f += refract * g;
+        if (tir) f += refract * g;
+        pdf += (pMirror + (tir ? pRefract : 0.0f)) * (g1o * om * d / o.z) * reflectionJacobian(i, m);
     } else if (i.z < 0.0f && pRefract > 0.0f) { // transmission through m = -(o + eta i)
         Vec3 m = safeNormalize(-(o + side.etaRel * i));
         if (m.z < 0.0f) m = -m;
         float om = glm::dot(o, m), im = glm::dot(i, m);
         if (om <= 0.0f || im >= 0.0f) return f;
         float denom = om + side.etaRel * im;
-        f += refract * (ggxD(m, alpha) * smithG2Separable(o, i, m, alpha) * om * -im / (o.z * denom * denom));
+        float d = ggxD(m, alpha), g1o = smithG1(o, m, alpha);
+        f += refract * (d * g1o * smithG1(i, m, alpha) * om * -im / (o.z * denom * denom));
+        pdf += pRefract * (g1o * om * d / o.z) * refractionJacobian(o, i, m, side.etaRel);
     }
     return f;
-}
-
-float LabBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
-    float p = 0.0f;
-    if (pDiffuse > 0.0f && wo.z * wi.z > 0.0f) {
-        float density = hemisphere == HemisphereSampling::Cosine ? std::abs(wi.z) * kInvPi : uniformHemispherePdf();
-        p += pDiffuse * density;
-    }
-    if (!rough() || wo.z == 0.0f) return p;
-    Side side = sideOf(wo, eta);
-    Vec3 o = wo * side.sign, i = wi * side.sign;
-    if (i.z > 0.0f) {
-        Vec3 m = safeNormalize(o + i);
-        if (m.z <= 0.0f) return p;
-        float density = visibleNormalPdf(o, m, alpha) * reflectionJacobian(i, m);
-        float lobes = pMirror + (totallyReflects(o, m, side.etaRel) ? pRefract : 0.0f);
-        p += lobes * density;
-    } else if (i.z < 0.0f && pRefract > 0.0f) {
-        Vec3 m = safeNormalize(-(o + side.etaRel * i));
-        if (m.z < 0.0f) m = -m;
-        if (glm::dot(o, m) <= 0.0f || glm::dot(i, m) >= 0.0f) return p;
-        p += pRefract * visibleNormalPdf(o, m, alpha) * refractionJacobian(o, i, m, side.etaRel);
-    }
-    return p;
 }
 
 bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
@@ -137,9 +125,9 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
         // The weight of the whole mixture, f / pdf over every non-delta lobe: lower variance than
         // the chosen lobe's own ratio (its weight times G1(wi, m) times the radiance scaling), and
         // what MIS's pdf describes.
-        out.pdf = pdf(wo, out.wi);
+        Spectrum f = evalPdf(wo, out.wi, out.pdf);
         if (!(out.pdf > 0.0f)) return false;
-        out.weight = eval(wo, out.wi) / out.pdf;
+        out.weight = f / out.pdf;
         return true;
     }
     if (chooseMirror) {
@@ -180,12 +168,12 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
     if (wi.z == 0.0f) return false;
     wi.z *= side;
     out.wi = wi;
-    out.pdf = pdf(wo, wi);
     out.lobeProbability = pDiffuse;
     out.delta = false;
+    Spectrum f = evalPdf(wo, wi, out.pdf);
     if (rough()) { // other non-delta lobes overlap the diffuse one: weigh the whole mixture
         if (!(out.pdf > 0.0f)) return false;
-        out.weight = eval(wo, wi) / out.pdf;
+        out.weight = f / out.pdf;
     }
     return true;
 }

@@ -93,8 +93,17 @@ struct LabBsdf {
     bool hasNonDelta() const { return pDiffuse > 0.0f || (rough() && pMirror + pRefract > 0.0f); }
     bool isBlack() const { return pMirror + pRefract + pDiffuse == 0.0f; }
 
-    Spectrum eval(const Vec3& wo, const Vec3& wi) const;
-    float pdf(const Vec3& wo, const Vec3& wi) const;
+    // eval() and pdf() of the same pair of directions, in one pass.
+    Spectrum evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) const;
+    Spectrum eval(const Vec3& wo, const Vec3& wi) const {
+        float unused;
+        return evalPdf(wo, wi, unused);
+    }
+    float pdf(const Vec3& wo, const Vec3& wi) const {
+        float p;
+        evalPdf(wo, wi, p);
+        return p;
+    }
     // u1 chooses the lobe, u2 the direction inside it. Returns false if the path ends here.
     bool sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const;
 };
