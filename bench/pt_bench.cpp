@@ -131,7 +131,7 @@ int runBench(const Options& o) {
     double bvhSeconds = secondsSince(t1);
 
     RenderSettings settings; // pt render's defaults
-    Renderer renderer(scene, *accel, scene.cameras[0], o.width, o.height, settings);
+    Renderer renderer(scene, *accel, scene.cameras[0], o.width, o.height, settings, 1); // a frame is 1 spp
     Film film(o.width, o.height);
 
     std::printf("pt-bench: %s, %zu triangles, %dx%d, 1 spp per frame, %d frames, %d threads\n", o.scene.c_str(),

@@ -361,7 +361,7 @@ int renderCommand(int argc, char** argv) {
     try {
         cameraIndex = pickCamera(scene, args.camera);
         std::vector<std::string> inputs = scene.sources;
-        for (const Texture& t : scene.textures) inputs.push_back(t.path);
+        for (size_t i = 0; i < scene.textures->size(); ++i) inputs.push_back((*scene.textures)[int(i)].path);
         std::string problem = outputIsInput({args.output, partial}, inputs);
         // Created now, before any rendering: a folder that refuses it fails here, not in an hour.
         if (problem.empty()) problem = output.open(args.output);

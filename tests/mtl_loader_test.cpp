@@ -138,13 +138,13 @@ TEST(Mtl, LightsAndCameras) {
 TEST(Mtl, TextureLoadsAndMissingTextureWarns) {
     Parsed ok = parse("newmtl T\nmap_Kd " PT_SOURCE_DIR "/scenes/checker.png\n"
                       "newmtl U\ndiffuseReflectanceMap " PT_SOURCE_DIR "/scenes/checker.png\n");
-    ASSERT_EQ(ok.scene.textures.size(), 1u); // loaded once, shared
+    ASSERT_EQ(ok.scene.textures->size(), 1u); // loaded once, shared
     EXPECT_EQ(ok.material("T").kdMap.texture, 0);
     EXPECT_EQ(ok.material("U").kdMap.texture, 0);
-    const Texture& t = ok.scene.textures[0];
+    const Texture& t = (*ok.scene.textures)[0];
     EXPECT_EQ(t.width, 128);
     // The checker's bright squares are sRGB 0.9 (linear 0.787).
-    EXPECT_NEAR(t.texels[0].x, 0.787f, 0.01f);
+    EXPECT_NEAR(t.texels[0], 0.787f, 0.01f);
 
     Parsed missing = parse("newmtl T\nmap_Kd nothere.png\n");
     EXPECT_FALSE(missing.material("T").kdMap.used());

@@ -158,8 +158,8 @@ TEST(LabScenes, LoadWithExpectedContents) {
     Scene bottle = loadScene(lab + "/cornellbottle2.obj", w);
     EXPECT_EQ(bottle.triangleCount(), 43066u);
     Scene textured = loadScene(lab + "/cornell_textured.obj", w);
-    ASSERT_EQ(textured.textures.size(), 1u);
-    EXPECT_GT(textured.textures[0].width, 0);
+    ASSERT_EQ(textured.textures->size(), 1u);
+    EXPECT_GT((*textured.textures)[0].width, 0);
     EXPECT_TRUE(w.messages().empty()) << w.messages()[0];
 }
 

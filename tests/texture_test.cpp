@@ -1,10 +1,14 @@
 // Texture lookups and the MTL map options: which way v runs, repeat against clamp, -s and -o.
+#include "core/color.h"
 #include "scene/mtl_loader.h"
-#include "texture/texture.h"
+#include "texture/texture_cache.h"
+#include "texture/texture_io.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
+#include <tuple>
 
 namespace pt {
 namespace {
@@ -15,47 +19,142 @@ Texture twoTexels(Spectrum first, Spectrum second, bool vertical) {
     Texture t;
     t.width = vertical ? 1 : 2;
     t.height = vertical ? 2 : 1;
-    t.texels = {first, second}; // row 0 is the top of the image
+    t.channels = 3;
+    t.texels = {first.x, first.y, first.z, second.x, second.y, second.z}; // row 0 is the top of the image
     return t;
 }
 
-void expectColor(Spectrum got, Spectrum want, const char* what) {
-    EXPECT_NEAR(got.x, want.x, 1e-5f) << what;
-    EXPECT_NEAR(got.y, want.y, 1e-5f) << what;
-    EXPECT_NEAR(got.z, want.z, 1e-5f) << what;
+TextureMap mapOf(int texture) {
+    TextureMap m;
+    m.texture = texture;
+    return m;
 }
 
+void expectColor(Spectrum got, Spectrum want, const char* what, float tolerance = 1e-5f) {
+    EXPECT_NEAR(got.x, want.x, tolerance) << what;
+    EXPECT_NEAR(got.y, want.y, tolerance) << what;
+    EXPECT_NEAR(got.z, want.z, tolerance) << what;
+}
+
+const Footprint kPoint; // a bilinear lookup in the finest level
+
 TEST(Texture, VRunsUpFromTheBottomRow) {
-    Texture t = twoTexels(kGreen, kWhite, true); // green on top, white at the bottom
-    expectColor(lookupTexture(t, Vec2(0.5f, 0.25f)), kWhite, "v 0.25 is the bottom texel");
-    expectColor(lookupTexture(t, Vec2(0.5f, 0.75f)), kGreen, "v 0.75 is the top texel");
-    expectColor(lookupTexture(t, Vec2(0.5f, 0.5f)), 0.5f * (kGreen + kWhite), "bilinear between them");
+    TextureCache cache;
+    TextureMap m = mapOf(cache.add(twoTexels(kGreen, kWhite, true))); // green on top, white at the bottom
+    m.clamp = true;
+    expectColor(cache.color(m, Vec2(0.5f, 0.25f), kPoint), kWhite, "v 0.25 is the bottom texel");
+    expectColor(cache.color(m, Vec2(0.5f, 0.75f), kPoint), kGreen, "v 0.75 is the top texel");
+    expectColor(cache.color(m, Vec2(0.5f, 0.5f), kPoint), 0.5f * (kGreen + kWhite), "bilinear between them");
 }
 
 TEST(Texture, RepeatAndClamp) {
-    std::vector<Texture> textures = {twoTexels(kRed, kBlue, false)};
-    TextureMap repeat;
-    repeat.texture = 0;
+    TextureCache cache;
+    TextureMap repeat = mapOf(cache.add(twoTexels(kRed, kBlue, false)));
     TextureMap clamp = repeat;
     clamp.clamp = true;
-    expectColor(lookupTexture(textures, repeat, Vec2(1.25f, 0.5f)), kRed, "repeat: u 1.25 is u 0.25");
-    expectColor(lookupTexture(textures, clamp, Vec2(1.25f, 0.5f)), kBlue, "clamp: u 1.25 is the right edge");
-    expectColor(lookupTexture(textures, clamp, Vec2(-3.0f, 0.5f)), kRed, "clamp: u -3 is the left edge");
+    expectColor(cache.color(repeat, Vec2(1.25f, 0.5f), kPoint), kRed, "repeat: u 1.25 is u 0.25");
+    expectColor(cache.color(clamp, Vec2(1.25f, 0.5f), kPoint), kBlue, "clamp: u 1.25 is the right edge");
+    expectColor(cache.color(clamp, Vec2(-3.0f, 0.5f), kPoint), kRed, "clamp: u -3 is the left edge");
     // At the border, repeat blends with the opposite edge and clamp does not.
-    expectColor(lookupTexture(textures, repeat, Vec2(0.0f, 0.5f)), 0.5f * (kRed + kBlue), "repeat at u 0");
-    expectColor(lookupTexture(textures, clamp, Vec2(0.0f, 0.5f)), kRed, "clamp at u 0");
+    expectColor(cache.color(repeat, Vec2(0.0f, 0.5f), kPoint), 0.5f * (kRed + kBlue), "repeat at u 0");
+    expectColor(cache.color(clamp, Vec2(0.0f, 0.5f), kPoint), kRed, "clamp at u 0");
 }
 
 TEST(Texture, ScaleAndOffset) {
-    std::vector<Texture> textures = {twoTexels(kRed, kBlue, false)};
-    TextureMap m;
-    m.texture = 0;
+    TextureCache cache;
+    TextureMap m = mapOf(cache.add(twoTexels(kRed, kBlue, false)));
     m.offset = Vec2(0.5f, 0.0f);
-    expectColor(lookupTexture(textures, m, Vec2(0.25f, 0.5f)), kBlue, "-o 0.5 moves u 0.25 to 0.75");
+    expectColor(cache.color(m, Vec2(0.25f, 0.5f), kPoint), kBlue, "-o 0.5 moves u 0.25 to 0.75");
     m.offset = Vec2(0.0f);
     m.scale = Vec2(2.0f, 1.0f);
-    expectColor(lookupTexture(textures, m, Vec2(0.375f, 0.5f)), kBlue, "-s 2 takes u 0.375 to 0.75");
-    expectColor(lookupTexture(textures, m, Vec2(0.625f, 0.5f)), kRed, "-s 2 takes u 0.625 to 1.25, repeated");
+    expectColor(cache.color(m, Vec2(0.375f, 0.5f), kPoint), kBlue, "-s 2 takes u 0.375 to 0.75");
+    expectColor(cache.color(m, Vec2(0.625f, 0.5f), kPoint), kRed, "-s 2 takes u 0.625 to 1.25, repeated");
+}
+
+// A 64 x 64 checker of 8 x 8 squares, black and white: far away (a footprint of the whole
+// texture) it must average to the mean of the light, 0.5, not to the mean of the encoded values.
+TEST(Texture, MinificationAveragesLinearValues) {
+    TextureCache cache;
+    Texture t;
+    t.width = t.height = 64;
+    t.channels = 3;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x)
+            for (int c = 0; c < 3; ++c) t.texels.push_back(float(((x / 8) + (y / 8)) % 2));
+    TextureMap m = mapOf(cache.add(std::move(t)));
+    Footprint whole{Vec2(1.0f, 0.0f), Vec2(0.0f, 1.0f)};
+    expectColor(cache.color(m, Vec2(0.3f, 0.7f), whole), Spectrum(0.5f), "the coarsest level", 0.02f);
+    // A footprint two squares wide, stretched 8:1, is still filtered (anisotropically) to the mean.
+    Footprint grazing{Vec2(0.25f, 0.0f), Vec2(0.0f, 0.03125f)};
+    expectColor(cache.color(m, Vec2(0.3f, 0.7f), grazing), Spectrum(0.5f), "anisotropic", 0.1f);
+    // A tiny footprint keeps the texel.
+    Footprint tiny{Vec2(1e-4f, 0.0f), Vec2(0.0f, 1e-4f)};
+    expectColor(cache.color(m, Vec2(4.5f / 64, 1.0f - 4.5f / 64), tiny), Spectrum(0.0f), "finest level");
+}
+
+// -imfchan: r, g, b, alpha and luminance of an RGBA data texture.
+TEST(Texture, ScalarChannels) {
+    TextureCache cache;
+    Texture t;
+    t.colour = false;
+    t.width = t.height = 1;
+    t.channels = 4;
+    t.texels = {0.1f, 0.2f, 0.4f, 0.8f};
+    TextureMap m = mapOf(cache.add(std::move(t)));
+    const std::pair<TextureChannel, float> want[] = {{TextureChannel::R, 0.1f},
+                                                     {TextureChannel::G, 0.2f},
+                                                     {TextureChannel::B, 0.4f},
+                                                     {TextureChannel::Alpha, 0.8f},
+                                                     {TextureChannel::Luminance, 0.2126f * 0.1f + 0.7152f * 0.2f + 0.0722f * 0.4f}};
+    for (auto [channel, value] : want) {
+        m.channel = channel;
+        EXPECT_NEAR(cache.scalar(m, Vec2(0.5f), kPoint), value, 1e-6f) << int(channel);
+    }
+}
+
+// A height ramp rising by 1 across the texture in u: the lookup's derivative is 1 per unit u
+// (and 2 with -s 2), and 0 in v.
+TEST(Texture, DerivativesOfARamp) {
+    TextureCache cache;
+    Texture t;
+    t.colour = false;
+    t.width = 32;
+    t.height = 4;
+    t.channels = 1;
+    for (int y = 0; y < t.height; ++y)
+        for (int x = 0; x < t.width; ++x) t.texels.push_back((x + 0.5f) / float(t.width));
+    TextureMap m = mapOf(cache.add(std::move(t)));
+    m.channel = TextureChannel::R;
+    m.clamp = true;
+    Vec2 d;
+    float h = cache.scalar(m, Vec2(0.4f, 0.5f), kPoint, d);
+    EXPECT_NEAR(h, 0.4f, 1e-5f);
+    EXPECT_NEAR(d.x, 1.0f, 1e-3f);
+    EXPECT_NEAR(d.y, 0.0f, 1e-3f);
+    m.scale = Vec2(2.0f, 1.0f);
+    cache.scalar(m, Vec2(0.2f, 0.5f), kPoint, d);
+    EXPECT_NEAR(d.x, 2.0f, 2e-3f);
+}
+
+// The same 8-bit grey of 128 is sRGB-encoded as a colour map and linear as a data map; float
+// files are linear either way.
+TEST(Texture, SrgbAgainstLinear) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::path(::testing::TempDir()) / "pt_texture_encoding";
+    fs::create_directories(dir);
+    std::string png = (dir / "grey.png").string(), exr = (dir / "grey.exr").string();
+    ASSERT_EQ(std::system(("oiiotool --create 4x4 3 --fill:color=0.50196,0.50196,0.50196 4x4 -d uint8 -o " + png +
+                           " >/dev/null 2>&1").c_str()), 0);
+    ASSERT_EQ(std::system(("oiiotool --create 4x4 3 --fill:color=0.5,0.5,0.5 4x4 -d float -o " + exr +
+                           " >/dev/null 2>&1").c_str()), 0);
+    for (auto [file, colour, want] : std::vector<std::tuple<std::string, bool, float>>{
+             {png, true, srgbToLinear(128.0f / 255.0f)}, {png, false, 128.0f / 255.0f}, {exr, true, 0.5f}, {exr, false, 0.5f}}) {
+        Texture t;
+        std::string error;
+        bool tooLarge;
+        ASSERT_TRUE(readTexture(file, colour, t, error, 1e9, tooLarge)) << error;
+        EXPECT_NEAR(t.texels[0], want, 1e-4f) << file << (colour ? " as colour" : " as data");
+    }
 }
 
 struct Parsed {
@@ -81,9 +180,9 @@ TEST(Texture, MapOptionsAndNamesWithSpaces) {
     EXPECT_EQ(m.scale, Vec2(2.0f, 3.0f));
     EXPECT_EQ(m.offset, Vec2(0.5f, 0.25f));
     EXPECT_TRUE(m.clamp);
-    EXPECT_EQ(p.scene.textures.at(0).width, 128);
+    EXPECT_EQ((*p.scene.textures)[0].width, 128);
     ASSERT_EQ(p.warnings.messages().size(), 1u);
-    EXPECT_NE(p.warnings.messages()[0].find("test.mtl:2: map_Kd: option -bm has no effect"), std::string::npos);
+    EXPECT_NE(p.warnings.messages()[0].find("test.mtl:2: map_Kd: option -bm has no effect on this map"), std::string::npos);
 
     Parsed one = parse("newmtl A\nmap_Kd -s 4 my checker.png\n", dir.string());
     EXPECT_EQ(one.scene.materials.at(0).kdMap.scale, Vec2(4.0f, 1.0f)); // v keeps its default
@@ -93,6 +192,76 @@ TEST(Texture, MapOptionsAndNamesWithSpaces) {
              {"map_Kd -zz my checker.png", "test.mtl:2: map_Kd: unknown texture option \"-zz\""},
              {"map_Kd -s my checker.png", "test.mtl:2: map_Kd -s: expected a number"},
              {"map_Kd -o 1 2", "test.mtl:2: map_Kd: expected a file name"}}) {
+        try {
+            parse("newmtl A\n" + line + "\n", dir.string());
+            ADD_FAILURE() << line << ": no error";
+        } catch (const LoadError& e) {
+            EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << line << ": " << e.what();
+        }
+    }
+}
+
+std::string messages(const Warnings& w) {
+    std::string all;
+    for (const std::string& m : w.messages()) all += m + "\n";
+    return all;
+}
+
+// The data maps: which channel each reads, -bm, d as coverage with map_d, and the ways their
+// input can be wrong.
+TEST(Texture, DataMapKeywordsAndOptions) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::path(::testing::TempDir()) / "pt_texture_data_maps";
+    fs::create_directories(dir);
+    ASSERT_EQ(std::system(("oiiotool --create 4x4 4 --fill:color=0.2,0.4,0.6,0.5 4x4 -d uint8 -o " +
+                           (dir / "rgba.png").string() + " >/dev/null 2>&1").c_str()), 0);
+    ASSERT_EQ(std::system(("oiiotool --create 4x4 1 --fill:color=0.5 4x4 -d uint8 -o " + (dir / "grey.png").string() +
+                           " >/dev/null 2>&1").c_str()), 0);
+    Parsed p = parse("newmtl A\nd 0.5\nTr 0.25\nmap_d rgba.png\nmap_Pr -imfchan g rgba.png\nmap_Pm -imfchan r grey.png\n"
+                     "bump -bm 0.02 grey.png\nmap_Ks grey.png\nmap_Kd rgba.png\n",
+                     dir.string());
+    ASSERT_EQ(p.scene.materials.size(), 1u);
+    const Material& m = p.scene.materials[0];
+    EXPECT_TRUE(m.alphaMap.used());
+    EXPECT_EQ(m.alphaMap.channel, TextureChannel::Alpha) << "map_d reads the alpha channel when there is one";
+    EXPECT_EQ(m.alpha, 0.5f) << "d scales coverage when map_d is given";
+    EXPECT_EQ(m.transparency, 0.25f) << "and is no transparency then";
+    EXPECT_EQ(m.roughnessMap.channel, TextureChannel::G);
+    EXPECT_EQ(m.metallicMap.channel, TextureChannel::R);
+    EXPECT_EQ(m.bumpMap.bumpScale, 0.02f);
+    EXPECT_EQ(m.bumpMap.channel, TextureChannel::Luminance);
+    EXPECT_EQ(m.ksMap.channel, TextureChannel::Rgb);
+    // rgba.png as data and as colour, grey.png as data and as colour.
+    EXPECT_EQ(p.scene.textures->size(), 4u);
+    EXPECT_TRUE(p.warnings.messages().empty()) << messages(p.warnings);
+
+    Parsed plain = parse("newmtl A\nd 0.5\n", dir.string());
+    EXPECT_EQ(plain.scene.materials[0].transparency, 0.5f) << "without map_d, d is the lab's transparency";
+    EXPECT_EQ(plain.scene.materials[0].alpha, 1.0f);
+    Parsed grey = parse("newmtl A\nmap_d grey.png\n", dir.string());
+    EXPECT_EQ(grey.scene.materials[0].alphaMap.channel, TextureChannel::Luminance);
+
+    // A map that cannot be used warns, names the line and falls back to the plain value.
+    for (const auto& [line, message] : std::vector<std::pair<std::string, std::string>>{
+             {"map_d -imfchan m grey.png", "test.mtl:2: map_d: texture \"" + (dir / "grey.png").string() + "\" has no alpha channel"},
+             {"norm grey.png", "test.mtl:2: norm: normal map \"" + (dir / "grey.png").string() + "\" has 1 channel(s); expected RGB"},
+             {"map_Pr missing.png", "test.mtl:2: map_Pr: texture \"" + (dir / "missing.png").string() + "\" not found; using the plain value"}}) {
+        Parsed q = parse("newmtl A\n" + line + "\n", dir.string());
+        EXPECT_FALSE(q.scene.materials[0].isTextured() || q.scene.materials[0].hasCutout()) << line;
+        ASSERT_EQ(q.warnings.messages().size(), 1u) << line;
+        EXPECT_NE(q.warnings.messages()[0].find(message), std::string::npos) << q.warnings.messages()[0];
+    }
+    Parsed twice = parse("newmtl A\nmap_Pr missing.png\nnewmtl B\nmap_Pm missing.png\n", dir.string());
+    EXPECT_EQ(twice.warnings.messages().size(), 1u) << "a missing file is reported once: " << messages(twice.warnings);
+    Parsed both = parse("newmtl A\nnorm rgba.png\nbump grey.png\n", dir.string());
+    EXPECT_FALSE(both.scene.materials[0].bumpMap.used());
+    EXPECT_NE(messages(both.warnings).find("the bump map is ignored"), std::string::npos);
+
+    for (const auto& [line, message] : std::vector<std::pair<std::string, std::string>>{
+             {"map_Pr -imfchan z grey.png", "test.mtl:2: map_Pr -imfchan: expected r, g, b, m (alpha) or l (luminance), found \"z\" (depth"},
+             {"bump -imfchan grey.png", "test.mtl:2: bump -imfchan: expected r, g, b"},
+             {"bump -bm grey.png", "test.mtl:2: bump -bm: expected a number"},
+             {"bump -bm 1e30 grey.png", "test.mtl:2: bump -bm: 1e+30 is beyond 1e12"}}) {
         try {
             parse("newmtl A\n" + line + "\n", dir.string());
             ADD_FAILURE() << line << ": no error";

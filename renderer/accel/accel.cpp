@@ -4,14 +4,73 @@
 
 #include <embree3/rtcore.h>
 
+#include <cstring>
 #include <string>
 
 namespace pt {
+
+namespace {
+
+constexpr unsigned kOpaqueGeometry = 0, kCutoutGeometry = 1;
+
+// Triangles of materials with a cutout (map_d) sit in a geometry of their own whose filter
+// function drops hits where the surface is not there; the opaque rest has no filter and pays
+// nothing. Coverage between 0 and 1 is a coin flip keyed on the hit and the ray, so an image does
+// not depend on which thread traced what.
+struct Cutouts {
+    const Scene* scene = nullptr;
+    std::vector<uint32_t> triangle; // primitive of the cutout geometry -> scene triangle
+};
+
+uint32_t floatBits(float f) {
+    uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+// A uniform number in [0, 1) from the hit and the ray (SplitMix64's finaliser).
+float coverageCoin(uint32_t triangle, float u, float v, float dx, float dy, float dz) {
+    uint64_t h = (uint64_t(triangle) << 32) ^ floatBits(u);
+    h = h * 0x9E3779B97F4A7C15ull ^ (uint64_t(floatBits(v)) << 32 | floatBits(dx));
+    h = h * 0xBF58476D1CE4E5B9ull ^ (uint64_t(floatBits(dy)) << 32 | floatBits(dz));
+    h ^= h >> 30;
+    h *= 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 27;
+    h *= 0x94D049BB133111EBull;
+    h ^= h >> 31;
+    return float(h >> 40) * 0x1p-24f;
+}
+
+void cutoutFilter(const RTCFilterFunctionNArguments* args) {
+    const auto* cut = static_cast<const Cutouts*>(args->geometryUserPtr);
+    const Scene& scene = *cut->scene;
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        uint32_t tri = cut->triangle[RTCHitN_primID(args->hit, args->N, i)];
+        float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
+        const Material& m = scene.materials[scene.triMaterial[tri]];
+        Vec2 uv(0.0f);
+        if (!scene.triUvs.empty() && scene.triUvs[tri].x >= 0) {
+            const glm::ivec3& ti = scene.triUvs[tri];
+            uv = (1.0f - u - v) * scene.uvs[ti.x] + u * scene.uvs[ti.y] + v * scene.uvs[ti.z];
+        }
+        float coverage = m.alpha * scene.textures->scalar(m.alphaMap, uv, Footprint{});
+        if (coverage >= 1.0f) continue;
+        float coin = coverageCoin(tri, u, v, RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+                                  RTCRayN_dir_z(args->ray, args->N, i));
+        if (!(coin < coverage)) args->valid[i] = 0; // not there: the ray goes on
+    }
+}
+
+} // namespace
 
 struct Accel::Impl {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     std::string error;
+    // Scene triangle of each primitive, per geometry; empty: the identity (no cutouts).
+    std::vector<uint32_t> opaqueTriangle;
+    Cutouts cutouts;
     // Sphere lights (radius > 0) as (centre, radius), with their index in Scene::lights.
     std::vector<glm::vec4> spheres;
     std::vector<uint32_t> sphereLight;
@@ -36,21 +95,44 @@ Accel::Accel(const Scene& scene, int threads, const AccelOptions& options) : imp
     rtcSetSceneFlags(impl_->scene, RTCSceneFlags(flags));
     rtcSetSceneBuildQuality(impl_->scene, quality);
 
-    if (scene.triangleCount() > 0) {
+    // Which triangles have a cutout: they go into a geometry of their own.
+    std::vector<uint32_t> opaque;
+    impl_->cutouts.scene = &scene;
+    bool anyCutout = false;
+    for (const Material& m : scene.materials) anyCutout |= m.hasCutout();
+    if (anyCutout) {
+        for (size_t t = 0; t < scene.triangleCount(); ++t)
+            (scene.materials[scene.triMaterial[t]].hasCutout() ? impl_->cutouts.triangle : opaque).push_back(uint32_t(t));
+        impl_->opaqueTriangle = opaque;
+    }
+    auto addGeometry = [&](const std::vector<uint32_t>* subset, unsigned id) {
+        size_t count = subset ? subset->size() : scene.triangleCount();
+        if (count == 0) return;
         RTCGeometry geom = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
         rtcSetGeometryBuildQuality(geom, quality);
         auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
             geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), scene.positions.size()));
-        auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-            geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), scene.triangleCount()));
+        auto* indices = static_cast<uint32_t*>(
+            rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), count));
         if (!vertices || !indices) throw LoadError("Embree could not allocate the mesh buffers: " + impl_->error);
         for (size_t i = 0; i < scene.positions.size(); ++i)
             for (int k = 0; k < 3; ++k) vertices[3 * i + k] = scene.positions[i][k];
-        for (size_t i = 0; i < scene.triangleCount(); ++i)
-            for (int k = 0; k < 3; ++k) indices[3 * i + k] = scene.triPositions[i][k];
+        for (size_t i = 0; i < count; ++i)
+            for (int k = 0; k < 3; ++k) indices[3 * i + k] = scene.triPositions[subset ? (*subset)[i] : i][k];
+        if (id == kCutoutGeometry) {
+            rtcSetGeometryUserData(geom, &impl_->cutouts);
+            rtcSetGeometryIntersectFilterFunction(geom, cutoutFilter);
+            rtcSetGeometryOccludedFilterFunction(geom, cutoutFilter);
+        }
         rtcCommitGeometry(geom);
-        rtcAttachGeometryByID(impl_->scene, geom, 0);
+        rtcAttachGeometryByID(impl_->scene, geom, id);
         rtcReleaseGeometry(geom);
+    };
+    if (anyCutout) {
+        addGeometry(&opaque, kOpaqueGeometry);
+        addGeometry(&impl_->cutouts.triangle, kCutoutGeometry);
+    } else {
+        addGeometry(nullptr, kOpaqueGeometry);
     }
     rtcCommitScene(impl_->scene);
     if (!impl_->error.empty()) throw LoadError(scene.path + ": building the BVH failed: " + impl_->error);
@@ -113,7 +195,9 @@ Hit Accel::intersect(const Ray& ray, bool coherent, float tfar) const {
     Hit hit;
     if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
         hit.t = rh.ray.tfar;
-        hit.prim = rh.hit.primID;
+        hit.prim = rh.hit.geomID == kCutoutGeometry ? impl_->cutouts.triangle[rh.hit.primID]
+                   : impl_->opaqueTriangle.empty()  ? rh.hit.primID
+                                                    : impl_->opaqueTriangle[rh.hit.primID];
         hit.u = rh.hit.u;
         hit.v = rh.hit.v;
     }

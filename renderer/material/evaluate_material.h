@@ -1,23 +1,73 @@
-// The one step from a material at a hit to its BSDF: texture lookups, the Pm rule, then the lab
-// tree collapsed for the outgoing direction. Everything a material's value depends on at a hit
-// goes through here, so new maps and lobes have one place to go.
+// The one step from a material at a hit to its BSDF: the shading normal after normal or bump
+// maps, the shading frame, texture lookups, the Pm rule, then the lab tree collapsed for the
+// outgoing direction. Everything a material's value depends on at a hit goes through here, so
+// new maps and lobes have one place to go.
 #pragma once
 
 #include "material/lab_bsdf.h"
-#include "texture/texture.h"
-
-#include <vector>
+#include "render/surface_point.h"
+#include "texture/texture_cache.h"
 
 namespace pt {
 
-// `uvAtHit()` gives the hit's texture coordinates; it is called only if the material has a
-// texture, so untextured materials pay nothing for uvs.
-template <typename UvAtHit>
-inline LabBsdf evaluateMaterial(const Material& m, const std::vector<Texture>& textures, UvAtHit&& uvAtHit,
-                                float cosThetaO, HemisphereSampling hemisphere) {
-    Spectrum kd = m.kd;
-    if (m.kdMap.used()) kd *= lookupTexture(textures, m.kdMap, uvAtHit());
-    return LabBsdf::make(labParameters(m, kd), cosThetaO, hemisphere);
+// A material evaluated at a hit: the BSDF in the local frame of the shading normal.
+struct ShadingPoint {
+    Frame frame;
+    Vec3 wo;   // outgoing direction in the frame
+    LabBsdf bsdf;
+};
+
+// The shading normal after a normal map (tangent space, y along increasing v) or a bump map
+// (the surface displaced along n by -bm * height).
+inline Vec3 perturbedNormal(const Material& m, const TextureCache& textures, const SurfacePoint& sp) {
+    const Vec3 n = sp.ns;
+    Vec3 mapped(0.0f);
+    if (m.normalMap.used()) {
+        Vec3 c = 2.0f * textures.vector(m.normalMap, sp.uv, sp.footprint) - Vec3(1.0f);
+        Vec3 t = sp.tangent;
+        if (t == Vec3(0.0f)) t = safeNormalize(sp.dpdu - n * glm::dot(n, sp.dpdu));
+        if (t == Vec3(0.0f)) t = Frame(n).s; // no uv direction at all: the map's x and y are arbitrary
+        Vec3 b = sp.bitangentSign * glm::cross(n, t);
+        mapped = (c.x * m.normalMap.bumpScale) * t + (c.y * m.normalMap.bumpScale) * b + c.z * n;
+    } else if (m.bumpMap.used()) {
+        if (sp.dpdu == Vec3(0.0f) || sp.dpdv == Vec3(0.0f)) return n;
+        Vec2 dh;
+        textures.scalar(m.bumpMap, sp.uv, sp.footprint, dh);
+        dh *= m.bumpMap.bumpScale;
+        Vec3 dpdu = sp.dpdu - n * (glm::dot(n, sp.dpdu) - dh.x);
+        Vec3 dpdv = sp.dpdv - n * (glm::dot(n, sp.dpdv) - dh.y);
+        mapped = glm::cross(dpdu, dpdv);
+        if (glm::dot(mapped, n) < 0.0f) mapped = -mapped;
+    } else {
+        return n;
+    }
+    mapped = safeNormalize(mapped);
+    return mapped == Vec3(0.0f) || !isFinite(mapped) ? n : mapped;
+}
+
+// `wo` points back along the arriving ray. For textured materials `sp` must carry its texture
+// coordinates (addTextureCoordinates).
+inline ShadingPoint evaluateMaterial(const Material& m, const TextureCache& textures, const SurfacePoint& sp,
+                                     const Vec3& wo, HemisphereSampling hemisphere) {
+    Vec3 n = m.perturbsNormal() ? perturbedNormal(m, textures, sp) : sp.ns;
+    // Where interpolated or mapped normals put the viewer behind the surface that the geometry
+    // shows (silhouettes of smooth meshes, steep bumps), trust the geometry.
+    if (glm::dot(wo, n) * glm::dot(wo, sp.ng) <= 0.0f) n = sp.ng;
+    ShadingPoint s;
+    s.frame = Frame(n);
+    s.wo = s.frame.toLocal(wo);
+    if (!m.isTextured()) {
+        s.bsdf = LabBsdf::make(labParameters(m, m.kd), s.wo.z, hemisphere);
+        return s;
+    }
+    Spectrum kd = m.kd, ks = m.ks;
+    float alpha = m.roughness, metallic = m.metallic;
+    if (m.kdMap.used()) kd *= textures.color(m.kdMap, sp.uv, sp.footprint);
+    if (m.ksMap.used()) ks *= textures.color(m.ksMap, sp.uv, sp.footprint);
+    if (m.roughnessMap.used()) alpha = sqr(std::clamp(textures.scalar(m.roughnessMap, sp.uv, sp.footprint), 0.0f, 1.0f));
+    if (m.metallicMap.used()) metallic = std::clamp(textures.scalar(m.metallicMap, sp.uv, sp.footprint), 0.0f, 1.0f);
+    s.bsdf = LabBsdf::make(labParameters(m, kd, ks, alpha, metallic), s.wo.z, hemisphere);
+    return s;
 }
 
 } // namespace pt

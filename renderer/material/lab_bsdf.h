@@ -48,6 +48,7 @@ struct BsdfSample {
     float lobeProbability = 0.0f; // probability that the sampled lobe was chosen
     bool delta = false;
     float radianceScale = 1.0f; // (eta_o / eta_i)^2 included in weight when the path refracted
+    float roughness = 0.0f; // GGX alpha of the sampled lobe: 0 for delta lobes, 1 for Lambert
 };
 
 // The lab tree's parameters at one hit, after textures and the Pm rule (evaluate_material.h).
@@ -60,16 +61,21 @@ struct LabParameters {
 // The parameters of a material whose Kd, after its texture, is `kd`. With Pm (the PBR
 // extension), metallic m mixes the dielectric's F0 towards Ks, the blend is always on, the mirror
 // is white and the diffuse part fades out with m.
-inline LabParameters labParameters(const Material& m, const Spectrum& kd) {
-    LabParameters p{kd, m.ks, m.r0, m.blend, m.transparency, m.eta, m.roughness};
-    if (m.metallic >= 0.0f) {
+// `ks`, `alpha` and `metallic` are the material's after their maps (metallic < 0: no Pm).
+inline LabParameters labParameters(const Material& m, const Spectrum& kd, const Spectrum& ks, float alpha,
+                                   float metallic) {
+    LabParameters p{kd, ks, m.r0, m.blend, m.transparency, m.eta, alpha};
+    if (metallic >= 0.0f) {
         float f0 = sqr((m.eta - 1.0f) / (m.eta + 1.0f));
-        p.r0 = glm::mix(Spectrum(f0), m.ks, m.metallic);
+        p.r0 = glm::mix(Spectrum(f0), ks, metallic);
         p.blend = 1.0f;
         p.ks = Spectrum(1.0f);
-        p.kd = kd * (1.0f - m.metallic);
+        p.kd = kd * (1.0f - metallic);
     }
     return p;
+}
+inline LabParameters labParameters(const Material& m, const Spectrum& kd) {
+    return labParameters(m, kd, m.ks, m.roughness, m.metallic);
 }
 
 struct LabBsdf {

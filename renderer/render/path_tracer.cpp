@@ -16,6 +16,10 @@ inline float powerHeuristic(float pdfA, float pdfB) {
 }
 
 constexpr int kRouletteDepth = 3; // scattering events before Russian roulette starts
+// A glossy bounce of GGX alpha widens a ray cone by about 2 alpha, the spread of its lobe; the
+// widening is capped (Lambert counts as alpha 1) so that textures seen after diffuse bounces are
+// blurred over a quarter radian, not over the hemisphere: coarser lookups, same mean.
+constexpr float kMaxConeWidening = 0.25f;
 
 } // namespace
 
@@ -30,6 +34,8 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
     bool deltaBefore = true;   // camera or delta lobe before this hit: emitters seen count fully
     float prevPdf = 0.0f;      // BSDF pdf of the direction that led here (non-delta)
     Vec3 prevP(0.0f);          // where that direction started
+    // Ray cone for texture footprints: width at the ray's origin and spread angle (radians).
+    float coneWidth = 0.0f, coneSpread = pixelSpread_;
     ++counts.camera;
 
     // Weight of emission found by BSDF sampling (or by the camera) at this hit.
@@ -57,23 +63,21 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
             break;
         }
 
-        SurfacePoint sp = makeSurfacePoint(triangles_[hit.prim], hit);
+        const ShadingTriangle& tri = triangles_[hit.prim];
+        SurfacePoint sp = makeSurfacePoint(tri, hit);
         const Material& m = scene_.materials[sp.material];
         if (m.isEmissive()) L += beta * m.emission * hitWeight(lights_.emitterOfTriangle(hit.prim), hit.t);
         if (depth == settings_.maxDepth) break;
 
-        // Shading frame. Where interpolated normals put the viewer behind the surface that the
-        // geometry shows (silhouettes of smooth meshes), trust the geometry.
-        Vec3 wo = -ray.dir;
-        Vec3 n = sp.ns;
-        if (glm::dot(wo, n) * glm::dot(wo, sp.ng) <= 0.0f) n = sp.ng;
-        Frame frame(n);
-        Vec3 woLocal = frame.toLocal(wo);
-        LabBsdf bsdf = evaluateMaterial(m, scene_.textures, [&] { return hitUv(scene_, hit); }, woLocal.z,
-                                        settings_.hemisphere);
+        coneWidth += coneSpread * hit.t;
+        if (m.isTextured()) addTextureCoordinates(sp, tri, scene_, tangents_, hit, ray.dir, coneWidth);
+        ShadingPoint shading = evaluateMaterial(m, *scene_.textures, sp, -ray.dir, settings_.hemisphere);
+        const Frame& frame = shading.frame;
+        const Vec3 woLocal = shading.wo;
+        const LabBsdf& bsdf = shading.bsdf;
         if (depth == 0 && first) {
             first->albedo = bsdf.mirror + bsdf.refract + bsdf.diffuse;
-            first->normal = woLocal.z >= 0.0f ? n : -n;
+            first->normal = woLocal.z >= 0.0f ? frame.n : -frame.n;
             first->depth = hit.t;
         }
         if (bsdf.isBlack()) break;
@@ -126,6 +130,7 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
         beta *= bs.weight;
         etaScale *= bs.radianceScale;
         deltaBefore = bs.delta;
+        coneSpread += std::min(2.0f * bs.roughness, kMaxConeWidening);
         prevPdf = bs.pdf;
         prevP = sp.p;
 

@@ -7,6 +7,7 @@
 #include "light/light_set.h"
 #include "render/render_settings.h"
 #include "render/shading_triangles.h"
+#include "render/vertex_tangents.h"
 #include "sampling/sampler.h"
 #include "sampling/sobol_sampler.h"
 #include "scene/scene.h"
@@ -22,9 +23,12 @@ struct FirstHit {
 
 class PathTracer {
 public:
-    PathTracer(const Scene& scene, const std::vector<ShadingTriangle>& triangles, const Accel& accel,
-               const LightSet& lights, const RenderSettings& settings)
-        : scene_(scene), triangles_(triangles), accel_(accel), lights_(lights), settings_(settings) {}
+    // `pixelSpread` is the angle a camera ray's cone opens per unit distance (texture footprints).
+    PathTracer(const Scene& scene, const std::vector<ShadingTriangle>& triangles,
+               const std::vector<CornerTangent>& tangents, const Accel& accel, const LightSet& lights,
+               const RenderSettings& settings, float pixelSpread)
+        : scene_(scene), triangles_(triangles), tangents_(tangents), accel_(accel), lights_(lights),
+          settings_(settings), pixelSpread_(pixelSpread) {}
 
     // Radiance arriving at the camera along `ray`. Sampler is IndependentSampler or SobolSampler;
     // the choice is made once per render, not per ray.
@@ -34,9 +38,11 @@ public:
 private:
     const Scene& scene_;
     const std::vector<ShadingTriangle>& triangles_;
+    const std::vector<CornerTangent>& tangents_;
     const Accel& accel_;
     const LightSet& lights_;
     const RenderSettings& settings_;
+    float pixelSpread_;
 };
 
 } // namespace pt

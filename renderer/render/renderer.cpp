@@ -10,10 +10,23 @@
 
 namespace pt {
 
+namespace {
+
+// Angle between the camera rays of neighbouring pixels at the image centre, scaled for the
+// samples that share a pixel.
+float pixelSpread(const Camera& camera, int height, uint32_t spp) {
+    float pixel = 2.0f * std::tan(glm::radians(0.5f * camera.fovY)) / float(height);
+    return pixel * std::max(0.125f, 1.0f / std::sqrt(float(std::max(spp, 1u))));
+}
+
+} // namespace
+
 Renderer::Renderer(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
-                   const RenderSettings& settings)
-    : scene_(scene), settings_(settings), triangles_(buildShadingTriangles(scene)), lights_(scene),
-      camera_(camera, width, height), tracer_(scene, triangles_, accel, lights_, settings_), width_(width), height_(height),
+                   const RenderSettings& settings, uint32_t spp)
+    : scene_(scene), settings_(settings), triangles_(buildShadingTriangles(scene)), tangents_(buildCornerTangents(scene)),
+      lights_(scene), camera_(camera, width, height),
+      tracer_(scene, triangles_, tangents_, accel, lights_, settings_, pixelSpread(camera, height, spp)),
+      width_(width), height_(height),
       tilesX_((width + kTileSize - 1) / kTileSize), tilesY_((height + kTileSize - 1) / kTileSize) {}
 
 RayCounts Renderer::renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress) const {
@@ -75,7 +88,7 @@ RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& c
                          bool firstHitLayers) {
     RenderResult result{Film(width, height), {}};
     if (firstHitLayers) result.film.enableFirstHitLayers();
-    Renderer renderer(scene, accel, camera, width, height, settings);
+    Renderer renderer(scene, accel, camera, width, height, settings, spp);
     // Passes of 1, 1, 2, 4, ... samples, at most spp / 32: a cancel request stops the render within
     // one pass of a tile, and the film counts samples per pixel, so what was done stays usable.
     const uint32_t maxPass = std::max<uint32_t>(1, spp / 32);

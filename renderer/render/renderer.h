@@ -27,8 +27,11 @@ class Renderer {
 public:
     static constexpr int kTileSize = 16;
 
+    // `spp` is the render's total samples per pixel: texture footprints shrink with it (each sample
+    // filters over 1 / sqrt(spp) of a pixel, at least an eighth), as the samples themselves average
+    // over the pixel.
     Renderer(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
-             const RenderSettings& settings);
+             const RenderSettings& settings, uint32_t spp);
 
     // Adds samples [first, last) of every pixel to `film`, in parallel on the calling thread's
     // task arena. Returns the rays traced.
@@ -43,6 +46,7 @@ private:
     const Scene& scene_;
     RenderSettings settings_;
     std::vector<ShadingTriangle> triangles_;
+    std::vector<CornerTangent> tangents_;
     LightSet lights_;
     PinholeCamera camera_;
     PathTracer tracer_;

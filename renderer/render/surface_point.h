@@ -5,6 +5,7 @@
 #include "accel/accel.h"
 #include "accel/ray_offset.h"
 #include "render/shading_triangles.h"
+#include "render/vertex_tangents.h"
 
 namespace pt {
 
@@ -14,6 +15,13 @@ struct SurfacePoint {
     Vec3 ng;      // unit geometric normal, on the outside as the vertex normals define it
     Vec3 ns;      // unit shading normal, same hemisphere as ng
     uint32_t material;
+
+    // Filled for textured materials only (addTextureCoordinates).
+    Vec2 uv{0.0f};
+    Vec3 dpdu{0.0f}, dpdv{0.0f}; // zero where the uv layout is degenerate
+    Footprint footprint;         // what a lookup filters over (a ray cone's ellipse, in uv)
+    Vec3 tangent{0.0f};          // interpolated vertex tangent (normal maps), not renormalised
+    float bitangentSign = 1.0f;
 };
 
 inline SurfacePoint makeSurfacePoint(const ShadingTriangle& tri, const Hit& hit) {
@@ -39,11 +47,48 @@ inline SurfacePoint makeSurfacePoint(const ShadingTriangle& tri, const Hit& hit)
     return sp;
 }
 
-// Texture coordinates of a hit; only textured materials need them.
-inline Vec2 hitUv(const Scene& scene, const Hit& hit) {
-    if (scene.triUvs.empty() || scene.triUvs[hit.prim].x < 0) return Vec2(0.0f);
+// Texture coordinates of a hit and the footprint of a ray cone of width `coneWidth` arriving
+// along `dir`: on the surface an ellipse with axes coneWidth across the plane of incidence and
+// coneWidth / |cos theta| along it, mapped into uv through the triangle's own uv layout.
+inline void addTextureCoordinates(SurfacePoint& sp, const ShadingTriangle& tri, const Scene& scene,
+                                  const std::vector<CornerTangent>& tangents, const Hit& hit, const Vec3& dir,
+                                  float coneWidth) {
+    if (scene.triUvs.empty() || scene.triUvs[hit.prim].x < 0) return;
     const glm::ivec3& ti = scene.triUvs[hit.prim];
-    return (1.0f - hit.u - hit.v) * scene.uvs[ti.x] + hit.u * scene.uvs[ti.y] + hit.v * scene.uvs[ti.z];
+    const Vec2 uv0 = scene.uvs[ti.x];
+    const Vec2 s1 = scene.uvs[ti.y] - uv0, s2 = scene.uvs[ti.z] - uv0;
+    const float b0 = 1.0f - hit.u - hit.v;
+    sp.uv = uv0 + hit.u * s1 + hit.v * s2;
+
+    float det = s1.x * s2.y - s1.y * s2.x;
+    if (det != 0.0f && std::isfinite(1.0f / det)) {
+        sp.dpdu = (s2.y * tri.e1 - s1.y * tri.e2) / det;
+        sp.dpdv = (s1.x * tri.e2 - s2.x * tri.e1) / det;
+    }
+    if (!tangents.empty()) {
+        const CornerTangent* c = &tangents[3 * size_t(hit.prim)];
+        sp.tangent = b0 * c[0].tangent + hit.u * c[1].tangent + hit.v * c[2].tangent;
+        sp.bitangentSign = c[0].sign;
+    }
+
+    if (!(coneWidth > 0.0f)) return;
+    Vec3 across = safeNormalize(glm::cross(sp.ng, dir));
+    if (across == Vec3(0.0f)) across = Frame(sp.ng).s; // head-on: the ellipse is a circle
+    Vec3 along = glm::cross(across, sp.ng);
+    float cosTheta = std::max(std::abs(glm::dot(dir, sp.ng)), 1e-3f);
+    // A surface vector a = alpha e1 + beta e2 moves uv by alpha s1 + beta s2.
+    // In double: the Gram determinant is a fourth power of the scene's size.
+    const glm::dvec3 e1(tri.e1), e2(tri.e2);
+    double g11 = glm::dot(e1, e1), g12 = glm::dot(e1, e2), g22 = glm::dot(e2, e2);
+    double gram = g11 * g22 - g12 * g12;
+    if (!(gram > 0.0)) return;
+    auto toUv = [&](const Vec3& a) {
+        double r1 = glm::dot(glm::dvec3(a), e1), r2 = glm::dot(glm::dvec3(a), e2);
+        float alpha = float((g22 * r1 - g12 * r2) / gram), beta = float((g11 * r2 - g12 * r1) / gram);
+        return alpha * s1 + beta * s2;
+    };
+    sp.footprint.dx = toUv(coneWidth * across);
+    sp.footprint.dy = toUv((coneWidth / cosTheta) * along);
 }
 
 // A ray leaving the surface in direction w, starting just off the surface on w's side.

@@ -3,6 +3,7 @@
 #include "texture/texture_io.h"
 #include "scene/text_parser.h"
 
+#include <algorithm>
 #include <charconv>
 #include <filesystem>
 #include <optional>
@@ -12,10 +13,14 @@ namespace {
 
 enum class Block { None, Material, Light, Camera };
 
+// What a map line's texture holds: colour (sRGB-decoded) or data (linear), and which options it takes.
+enum class MapKind { Colour, Scalar, Normal, Bump, Alpha };
+
 // A material as written; the metallic (Pm) rule is applied when it is evaluated at a hit.
 struct PendingMaterial {
     Material m;
     std::optional<float> metallic;
+    std::optional<float> d, tr; // d is coverage with map_d, else transparency 1 - d
     size_t line = 0;
 };
 
@@ -55,7 +60,7 @@ struct MtlParser {
     Spectrum nonNegativeColor(Tokens& t, std::string_view keyword);
     Spectrum reflectance(Tokens& t, std::string_view keyword);
     float unitInterval(Tokens& t, std::string_view keyword);
-    TextureMap loadTexture(std::string_view spec, std::string_view keyword, const LineReader& lines);
+    TextureMap loadTexture(std::string_view spec, std::string_view keyword, const LineReader& lines, MapKind kind);
 };
 
 void MtlParser::requireBlock(Block wanted, std::string_view keyword, const Tokens& t) const {
@@ -100,13 +105,17 @@ float MtlParser::unitInterval(Tokens& t, std::string_view keyword) {
 }
 
 // A map line: options, then the file name, which is the rest of the line and may hold spaces.
-// -s and -o take one to three numbers (u, v, w; w is for 3D textures and ignored), -clamp on|off.
-// Other options of the OBJ format (-blendu, -blendv, -boost, -mm, -t, -texres, -cc, -bm,
-// -imfchan, -type) do not change a colour map here: they are skipped with a warning.
-TextureMap MtlParser::loadTexture(std::string_view spec, std::string_view keyword, const LineReader& lines) {
+// -s and -o take one to three numbers (u, v, w; w is for 3D textures and ignored), -clamp on|off,
+// -bm a scale (bump and normal maps), -imfchan r|g|b|m|l the channel of a scalar map. Other options
+// of the OBJ format (-blendu, -blendv, -boost, -mm, -t, -texres, -cc, -type) change nothing here:
+// they are skipped with a warning.
+TextureMap MtlParser::loadTexture(std::string_view spec, std::string_view keyword, const LineReader& lines, MapKind kind) {
     std::string where = path + ":" + std::to_string(lines.lineNumber()) + ": ";
     std::string kw(keyword);
+    const bool scalar = kind == MapKind::Scalar || kind == MapKind::Bump || kind == MapKind::Alpha;
     TextureMap map;
+    map.channel = scalar ? TextureChannel::Luminance : TextureChannel::Rgb;
+    bool channelGiven = false;
     Tokens t(spec, lines);
     auto numbers = [&](const std::string& option, int most) {
         std::vector<float> v;
@@ -120,6 +129,9 @@ TextureMap MtlParser::loadTexture(std::string_view spec, std::string_view keywor
         }
         if (v.empty()) t.fail(kw + " " + option + ": expected a number");
         return v;
+    };
+    auto ignored = [&](const std::string& option) {
+        warnings.once("texopt:" + kw + option, where + kw + ": option " + option + " has no effect on this map; ignored");
     };
     for (;;) {
         Tokens probe = t;
@@ -135,45 +147,82 @@ TextureMap MtlParser::loadTexture(std::string_view spec, std::string_view keywor
             std::string_view onOff = t.word();
             if (onOff != "on" && onOff != "off") t.fail(kw + " -clamp: expected on or off, found \"" + std::string(onOff) + "\"");
             map.clamp = onOff == "on";
+        } else if (option == "-bm") {
+            float bm = numbers(option, 1)[0];
+            if (std::abs(bm) > kMaxCoordinate) t.fail(kw + " -bm: " + shortNumber(bm) + " is beyond 1e12");
+            if (kind == MapKind::Bump || kind == MapKind::Normal) map.bumpScale = bm;
+            else ignored(option);
+        } else if (option == "-imfchan") {
+            std::string_view c = t.word();
+            static const std::pair<std::string_view, TextureChannel> names[] = {
+                {"r", TextureChannel::R}, {"g", TextureChannel::G}, {"b", TextureChannel::B},
+                {"m", TextureChannel::Alpha}, {"l", TextureChannel::Luminance}};
+            auto it = std::find_if(std::begin(names), std::end(names), [&](const auto& n) { return n.first == c; });
+            if (it == std::end(names))
+                t.fail(kw + " -imfchan: expected r, g, b, m (alpha) or l (luminance), found \"" + std::string(c) + "\"" +
+                       (c == "z" ? " (depth channels are not supported)" : ""));
+            if (scalar) {
+                map.channel = it->second;
+                channelGiven = true;
+            } else {
+                ignored(option);
+            }
         } else if (option == "-blendu" || option == "-blendv" || option == "-cc" || option == "-boost" ||
-                   option == "-texres" || option == "-bm" || option == "-imfchan" || option == "-type") {
+                   option == "-texres" || option == "-type") {
             if (t.word().empty()) t.fail(kw + " " + option + ": expected a value");
-            warnings.once("texopt:" + option, where + kw + ": option " + option + " has no effect on a colour map; ignored");
+            ignored(option);
         } else if (option == "-mm" || option == "-t") {
             numbers(option, option == "-mm" ? 2 : 3);
-            warnings.once("texopt:" + option, where + kw + ": option " + option + " has no effect here; ignored");
+            ignored(option);
         } else {
             t.fail(kw + ": unknown texture option \"" + option +
-                   "\"; expected -s, -o, -clamp (or -blendu, -blendv, -boost, -mm, -t, -texres, -cc, -bm, -imfchan, -type)");
+                   "\"; expected -s, -o, -clamp, -bm, -imfchan (or -blendu, -blendv, -boost, -mm, -t, -texres, -cc, -type)");
         }
     }
     std::string file(t.restOfLine());
     if (file.empty()) throw LoadError(path, lines.lineNumber(), kw + ": expected a file name");
-    std::filesystem::path full = std::filesystem::path(path).parent_path() / file;
-    for (size_t i = 0; i < scene.textures.size(); ++i)
-        if (scene.textures[i].path == full.string()) {
-            map.texture = int(i);
-            return map;
-        }
-    std::string error;
-    Texture tex;
-    double used = 0.0;
-    for (const Texture& t : scene.textures) used += double(t.texels.size()) * sizeof(Spectrum);
-    bool tooLarge = false;
-    if (!readTexture(full.string(), tex, error, textureMemoryBudget() - used, tooLarge)) {
-        // Too large is an error: a render without the texture would be a silently different image.
-        if (tooLarge) throw LoadError(where + std::string(keyword) + ": " + error);
-        warnings.add(where + std::string(keyword) + ": " + error + "; using the plain colour instead");
+    std::string full = (std::filesystem::path(path).parent_path() / file).string();
+    const bool colour = kind == MapKind::Colour;
+    TextureCache& cache = *scene.textures;
+    auto fallBack = [&](const std::string& why) {
+        warnings.once("texture:" + full + (colour ? ":colour" : ":data"),
+                      where + kw + ": " + why + "; " + (kind == MapKind::Colour ? "using the plain colour" : "using the plain value") +
+                          " instead (reported once per file)");
         return TextureMap{};
+    };
+    map.texture = cache.find(full, colour);
+    if (map.texture < 0) {
+        std::string error;
+        Texture tex;
+        bool tooLarge = false;
+        if (!readTexture(full, colour, tex, error, textureMemoryBudget() - cache.bytes(), tooLarge)) {
+            // Too large is an error: a render without the texture would be a silently different image.
+            if (tooLarge) throw LoadError(where + kw + ": " + error);
+            return fallBack(error);
+        }
+        map.texture = cache.add(std::move(tex));
     }
-    scene.textures.push_back(std::move(tex));
-    map.texture = int(scene.textures.size() - 1);
+    const Texture& tex = cache[map.texture];
+    if (kind == MapKind::Alpha && !channelGiven && tex.hasAlpha()) map.channel = TextureChannel::Alpha;
+    if (map.channel == TextureChannel::Alpha && !tex.hasAlpha())
+        return fallBack("texture \"" + full + "\" has no alpha channel for -imfchan m");
+    if (kind == MapKind::Normal && tex.channels < 3)
+        return fallBack("normal map \"" + full + "\" has " + std::to_string(tex.channels) + " channel(s); expected RGB");
     return map;
 }
 
 void MtlParser::finishMaterial() {
     Material m = material.m;
     if (material.metallic) m.metallic = *material.metallic; // the Pm rule is applied at each hit
+    if (m.alphaMap.used() && material.d) { // with a cutout, d scales coverage and is no transparency
+        m.alpha = *material.d;
+        m.transparency = material.tr.value_or(0.0f);
+    }
+    if (m.normalMap.used() && m.bumpMap.used()) {
+        warnings.add(path + ":" + std::to_string(material.line) + ": material \"" + m.name +
+                     "\" has both a normal map (norm) and a bump map; the bump map is ignored");
+        m.bumpMap = TextureMap{};
+    }
     if (materialIndex.count(m.name))
         warnings.add(path + ":" + std::to_string(material.line) + ": material \"" + m.name +
                      "\" defined again; the later definition wins");
@@ -264,7 +313,31 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
         m.kd = reflectance(t, keyword);
     } else if (is("map_Kd") || is("diffuseReflectanceMap")) {
         requireBlock(Block::Material, keyword, t);
-        m.kdMap = loadTexture(t.restOfLine(), keyword, lines);
+        m.kdMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Colour);
+        return;
+    } else if (is("map_Ks") || is("specularReflectanceMap")) {
+        requireBlock(Block::Material, keyword, t);
+        m.ksMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Colour);
+        return;
+    } else if (is("map_Pr")) {
+        requireBlock(Block::Material, keyword, t);
+        m.roughnessMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Scalar);
+        return;
+    } else if (is("map_Pm")) {
+        requireBlock(Block::Material, keyword, t);
+        m.metallicMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Scalar);
+        return;
+    } else if (is("norm")) {
+        requireBlock(Block::Material, keyword, t);
+        m.normalMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Normal);
+        return;
+    } else if (is("bump") || is("map_bump")) {
+        requireBlock(Block::Material, keyword, t);
+        m.bumpMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Bump);
+        return;
+    } else if (is("map_d")) {
+        requireBlock(Block::Material, keyword, t);
+        m.alphaMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Alpha);
         return;
     } else if (is("Ks") || is("specularReflectance")) {
         requireBlock(Block::Material, keyword, t);
@@ -279,9 +352,11 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
     } else if (is("transparency") || is("Tr")) {
         requireBlock(Block::Material, keyword, t);
         m.transparency = unitInterval(t, keyword);
+        material.tr = m.transparency;
     } else if (is("d")) {
         requireBlock(Block::Material, keyword, t);
-        m.transparency = 1.0f - unitInterval(t, keyword);
+        material.d = unitInterval(t, keyword);
+        m.transparency = 1.0f - *material.d;
     } else if (is("indexofrefraction") || is("Ni")) {
         requireBlock(Block::Material, keyword, t);
         m.eta = t.number(keyword);

@@ -3,9 +3,10 @@
 #pragma once
 
 #include "core/math.h"
-#include "texture/texture.h"
+#include "texture/texture_cache.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,12 @@ struct Material {
     std::string name;
     Spectrum kd{0.7f};            // Lambert reflectance (Kd, diffuseReflectance)
     TextureMap kdMap;             // multiplies kd (map_Kd), with its -s, -o and -clamp options
+    TextureMap ksMap;             // multiplies ks (map_Ks)
+    TextureMap roughnessMap;      // perceptual roughness: alpha = value^2 (map_Pr)
+    TextureMap metallicMap;       // metallic, replacing Pm (map_Pm)
+    TextureMap normalMap;         // tangent-space normal map (norm)
+    TextureMap bumpMap;           // height map, height = -bm * value (bump, map_bump)
+    TextureMap alphaMap;          // coverage = alpha * value (map_d); rays pass the rest
     Spectrum ks{1.0f};            // mirror colour (Ks, specularReflectance)
     Spectrum r0{0.0f};            // Fresnel reflectance at normal incidence (reflat0deg)
     float blend = 0.0f;           // w, weight of the Fresnel blend (reflat90deg)
@@ -50,9 +57,15 @@ struct Material {
     float eta = 1.0f;             // index of refraction inside the surface (Ni)
     float roughness = 0.001f;     // GGX alpha (specularroughness, or Pr^2); <= 0.001 is smooth
     float metallic = -1.0f;       // Pm in [0, 1], applied when the material is evaluated; < 0: not given
+    float alpha = 1.0f;           // coverage multiplier of map_d (d, where map_d is given)
     Spectrum emission{0.0f};      // emitted radiance, both sides (Ke, emittance)
 
     bool isEmissive() const { return !isBlack(emission); }
+    bool hasCutout() const { return alphaMap.used(); }
+    bool perturbsNormal() const { return normalMap.used() || bumpMap.used(); }
+    bool isTextured() const {
+        return kdMap.used() || ksMap.used() || roughnessMap.used() || metallicMap.used() || perturbsNormal();
+    }
 };
 
 // Radiance seen by rays that leave the scene: `sky` for directions with y > 0, else `ground`.
@@ -66,7 +79,7 @@ struct Environment {
 
 struct Scene {
     std::string path; // file it was loaded from, for messages and metadata
-    std::vector<std::string> sources; // every file read: the scene and its MTLs (textures: Texture::path)
+    std::vector<std::string> sources; // every file read: the scene and its MTLs (textures: TextureCache)
 
     // Geometry. Each triangle corner has its own position, normal and uv index, as in OBJ.
     std::vector<Vec3> positions;
@@ -78,7 +91,7 @@ struct Scene {
     std::vector<uint32_t> triMaterial;
 
     std::vector<Material> materials;
-    std::vector<Texture> textures;
+    std::shared_ptr<TextureCache> textures = std::make_shared<TextureCache>(); // shared by copies
     std::vector<SphereLight> lights;
     std::vector<Camera> cameras;
     Environment environment;

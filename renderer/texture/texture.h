@@ -1,56 +1,47 @@
-// A texture: linear RGB texels and how to look them up. The texture module (texture/) owns
-// reading images as textures and every lookup, so that materials only ask for a value at a uv.
+// Textures as the scene holds them, and how a material uses one. Lookups go through
+// texture/texture_cache.h (OpenImageIO's TextureSystem: mip-mapped, filtered, tile-cached).
 #pragma once
 
 #include "core/math.h"
 
-#include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace pt {
 
-// Linear RGB texels, row 0 at the top of the image (v = 1 in texture space).
+// Linear float texels as read from a file, row 0 at the top of the image (v = 1 in texture space).
+// A colour texture is decoded from sRGB where the file is 8- or 16-bit and always has 3 channels
+// (grey replicated, alpha dropped); a data texture keeps the file's values and its first 1 to 4
+// channels (an alpha channel last).
 struct Texture {
     std::string path;
-    int width = 0, height = 0;
-    std::vector<Spectrum> texels;
+    bool colour = true;
+    int width = 0, height = 0, channels = 0;
+    std::vector<float> texels;
+
+    bool hasAlpha() const { return channels == 2 || channels == 4; }
+    double bytes() const { return double(texels.size()) * sizeof(float); }
 };
+
+// Which value a scalar map takes from its texture (-imfchan).
+enum class TextureChannel : uint8_t { Rgb, R, G, B, Alpha, Luminance };
 
 // How a material uses a texture: the MTL map options that change the lookup.
 struct TextureMap {
-    int texture = -1;               // index into Scene::textures; -1: no map
+    int texture = -1;               // index into the scene's TextureCache; -1: no map
     Vec2 scale{1.0f}, offset{0.0f}; // -s and -o: the lookup is at uv * scale + offset
     bool clamp = false;             // -clamp on: uv outside [0, 1] takes the edge's texels
+    TextureChannel channel = TextureChannel::Rgb; // colour maps: Rgb; scalar maps: -imfchan
+    float bumpScale = 1.0f;         // -bm: height scale of bump maps, xy scale of normal maps
 
     bool used() const { return texture >= 0; }
 };
 
-// Bilinear lookup, repeating the image or (clampToEdge) extending its border texels. v = 0 is
-// the bottom of the image, as in OBJ.
-inline Spectrum lookupTexture(const Texture& tex, Vec2 uv, bool clampToEdge = false) {
-    float x = uv.x * float(tex.width) - 0.5f;
-    float y = (1.0f - uv.y) * float(tex.height) - 0.5f;
-    if (!std::isfinite(x) || !std::isfinite(y)) return tex.texels[0];
-    float fx = std::floor(x), fy = std::floor(y);
-    float tx = x - fx, ty = y - fy;
-    auto wrap = [clampToEdge](float i, int n) {
-        if (clampToEdge) return int(std::clamp(i, 0.0f, float(n - 1)));
-        long long k = (long long)std::fmod(i, float(n));
-        return int(k < 0 ? k + n : k);
-    };
-    int x0 = wrap(fx, tex.width), x1 = wrap(fx + 1.0f, tex.width);
-    int y0 = wrap(fy, tex.height), y1 = wrap(fy + 1.0f, tex.height);
-    auto at = [&](int xi, int yi) { return tex.texels[size_t(yi) * tex.width + xi]; };
-    return (1.0f - ty) * ((1.0f - tx) * at(x0, y0) + tx * at(x1, y0)) +
-           ty * ((1.0f - tx) * at(x0, y1) + tx * at(x1, y1));
-}
-
-// A map's value at a hit's uv, after its -s, -o and -clamp options.
-inline Spectrum lookupTexture(const std::vector<Texture>& textures, const TextureMap& map, Vec2 uv) {
-    uv = uv * map.scale + map.offset;
-    if (map.clamp) uv = glm::clamp(uv, Vec2(0.0f), Vec2(1.0f));
-    return lookupTexture(textures[size_t(map.texture)], uv, map.clamp);
-}
+// Where a lookup filters: two axes in uv (before -s and -o) of the ellipse that a ray cone
+// covers at the hit. Zero axes give a bilinear lookup in the finest level.
+struct Footprint {
+    Vec2 dx{0.0f}, dy{0.0f};
+};
 
 } // namespace pt

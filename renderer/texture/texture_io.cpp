@@ -16,7 +16,8 @@ double textureMemoryBudget() {
     return physical > 0 ? 0.25 * physical : 4e9;
 }
 
-bool readTexture(const std::string& path, Texture& texture, std::string& error, double budgetBytes, bool& tooLarge) {
+bool readTexture(const std::string& path, bool colour, Texture& texture, std::string& error, double budgetBytes,
+                 bool& tooLarge) {
     tooLarge = false;
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) { // a pipe or device could block forever
@@ -34,8 +35,10 @@ bool readTexture(const std::string& path, Texture& texture, std::string& error, 
         error = "texture \"" + path + "\" has an unusable size " + std::to_string(w) + "x" + std::to_string(h);
         return false;
     }
-    // RGB float texels, plus one float channel while a grey image is expanded.
-    double bytes = double(w) * double(h) * (sizeof(Spectrum) + (nc < 3 ? sizeof(float) : 0));
+    // Colour: RGB (grey read as one channel, then replicated). Data: up to four channels as stored.
+    int stored = colour ? 3 : std::min(nc, 4);
+    int read = colour ? (nc >= 3 ? 3 : 1) : stored;
+    double bytes = double(w) * double(h) * sizeof(float) * (stored + (read < stored ? read : 0));
     if (bytes > budgetBytes) {
         tooLarge = true;
         char what[160];
@@ -45,30 +48,32 @@ bool readTexture(const std::string& path, Texture& texture, std::string& error, 
         return false;
     }
     try {
-        texture.texels.assign(size_t(w) * h, Spectrum(0.0f));
-        std::vector<float> grey(nc < 3 ? size_t(w) * h : 0);
-        // RGB straight into the texels (alpha and further channels are not read).
-        bool ok = nc >= 3 ? in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, texture.texels.data())
-                          : in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, grey.data());
-        if (!ok) {
+        texture.texels.assign(size_t(w) * h * stored, 0.0f);
+        std::vector<float> grey(read < stored ? size_t(w) * h : 0);
+        float* target = grey.empty() ? texture.texels.data() : grey.data();
+        if (!in->read_image(0, 0, 0, read, OIIO::TypeDesc::FLOAT, target)) {
             error = "cannot read texture \"" + path + "\": " + in->geterror();
             texture.texels.clear();
             return false;
         }
-        for (size_t i = 0; i < grey.size(); ++i) texture.texels[i] = Spectrum(grey[i]);
+        for (size_t i = 0; i < grey.size(); ++i)
+            for (int c = 0; c < 3; ++c) texture.texels[3 * i + c] = grey[i];
     } catch (const std::bad_alloc&) {
         tooLarge = true;
         error = "texture \"" + path + "\": out of memory for its " + std::to_string(w) + "x" + std::to_string(h) + " texels";
         texture.texels.clear();
         return false;
     }
-    bool isLinear = spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF;
+    bool isLinear = spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF ||
+                    spec.format.basetype == OIIO::TypeDesc::DOUBLE;
     texture.path = path;
+    texture.colour = colour;
     texture.width = w;
     texture.height = h;
-    for (Spectrum& c : texture.texels) {
-        if (!isLinear) c = Spectrum(srgbToLinear(c.x), srgbToLinear(c.y), srgbToLinear(c.z));
-        c = isFinite(c) ? glm::max(c, Spectrum(0.0f)) : Spectrum(0.0f);
+    texture.channels = stored;
+    for (float& v : texture.texels) {
+        if (colour && !isLinear) v = srgbToLinear(v);
+        v = !std::isfinite(v) ? 0.0f : colour ? std::max(v, 0.0f) : v; // data may be signed
     }
     return true;
 }
