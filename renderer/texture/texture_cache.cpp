@@ -71,15 +71,18 @@ TextureCache::TextureCache() : impl_(std::make_unique<Impl>()) {
 }
 
 TextureCache::~TextureCache() {
-    if (impl_->system) OIIO::TextureSystem::destroy(impl_->system, true);
+    // Closed and forgotten before their texels go; the system itself lives on for other caches.
+    if (impl_->system)
+        for (const std::string& name : impl_->names) impl_->system->invalidate(OIIO::ustring(name), true);
     std::lock_guard<std::mutex> lock(registryMutex);
     for (const std::string& name : impl_->names) registry().erase(name);
 }
 
 int TextureCache::add(Texture&& texture) {
     if (!impl_->system) {
-        // A private system: its cache and statistics belong to this scene alone.
-        impl_->system = OIIO::TextureSystem::create(false);
+        // The process's one system: systems created and destroyed in turn (tests load many scenes)
+        // can hand a new one the per-thread tile caches of an old one.
+        impl_->system = OIIO::TextureSystem::create(true);
         OIIO::TextureSystem& ts = *impl_->system;
         ts.attribute("automip", 1);   // mip levels of our single-level images, built by OIIO
         ts.attribute("autotile", 64); // cached in 64x64 tiles

@@ -1,0 +1,242 @@
+// Textures in renders: filtering far away, normal and bump maps against the geometry they stand
+// for, and cutouts in camera and shadow rays.
+#include "tests/test_scenes.h"
+
+#include "image/compare.h"
+
+#include <gtest/gtest.h>
+
+namespace pt::test {
+namespace {
+
+Camera lookAt(Vec3 from, Vec3 to, Vec3 up, float fov) {
+    Camera c;
+    c.name = "test";
+    c.position = from;
+    c.target = to;
+    c.up = up;
+    c.fovY = fov;
+    return c;
+}
+
+// A quad with uvs from uv0 to uv1 (a gets uv0, c gets uv1) and optionally one vertex normal.
+void addUvQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material, Vec2 uv0, Vec2 uv1,
+               Vec3 normal = Vec3(0.0f)) {
+    size_t before = scene.triangleCount();
+    addQuad(scene, a, b, c, d, material);
+    scene.triUvs.resize(before, glm::ivec3(-1));
+    int base = int(scene.uvs.size());
+    scene.uvs.insert(scene.uvs.end(), {uv0, Vec2(uv1.x, uv0.y), uv1, Vec2(uv0.x, uv1.y)});
+    scene.triUvs.emplace_back(base, base + 1, base + 2);
+    scene.triUvs.emplace_back(base, base + 2, base + 3);
+    if (normal != Vec3(0.0f)) {
+        scene.triNormals.resize(before, glm::ivec3(-1));
+        int n = int(scene.normals.size());
+        scene.normals.push_back(normal);
+        scene.triNormals.emplace_back(n);
+        scene.triNormals.emplace_back(n);
+    }
+    if (!scene.triNormals.empty()) scene.triNormals.resize(scene.triangleCount(), glm::ivec3(-1));
+}
+
+// A texture of one value per channel, everywhere.
+int constantTexture(Scene& scene, std::vector<float> value, bool colour) {
+    Texture t;
+    t.path = "(constant)";
+    t.colour = colour;
+    t.width = t.height = 4;
+    t.channels = int(value.size());
+    for (int i = 0; i < 16; ++i) t.texels.insert(t.texels.end(), value.begin(), value.end());
+    return scene.textures->add(std::move(t));
+}
+
+TextureMap mapOf(int texture, TextureChannel channel = TextureChannel::Rgb) {
+    TextureMap m;
+    m.texture = texture;
+    m.channel = channel;
+    return m;
+}
+
+void expectSameImage(const Rendered& test, const Rendered& reference, const char* what) {
+    CompareOptions options;
+    options.blockSize = 8;
+    CompareReport report = compareImages(toImage(test), toImage(reference), options);
+    EXPECT_TRUE(report.pass) << what << ": " << report.failedTests << " tests differ; worst z " << report.worst[0].z
+                             << " at " << report.worst[0].x0 << "," << report.worst[0].y0;
+}
+
+// A black-and-white checker (Kd 0.8) on a plane to the horizon under a white sky: every pixel
+// converges to the pixel's average of the checker. Far away each pixel covers many squares;
+// filtered lookups give every sample nearly that average, so 16 samples show neither moire nor
+// the noise of point samples (+-0.1 at 16 spp), while near pixels keep the checker's contrast.
+TEST(TextureRender, CheckerToTheHorizonWithoutMoire) {
+    Scene scene = emptyScene(lookAt({0, 1, 0}, {0, 1 - 10 * std::tan(glm::radians(16.0f)), -10}, {0, 1, 0}, 30));
+    scene.environment.sky = Spectrum(1.0f);
+    Texture checker;
+    checker.width = checker.height = 64;
+    checker.channels = 3;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x)
+            for (int c = 0; c < 3; ++c) checker.texels.push_back(float(((x / 8) + (y / 8)) % 2));
+    Material m;
+    m.kd = Spectrum(0.8f);
+    m.kdMap = mapOf(scene.textures->add(std::move(checker)));
+    addUvQuad(scene, {-1000, 0, 1000}, {1000, 0, 1000}, {1000, 0, -1000}, {-1000, 0, -1000}, addMaterial(scene, m),
+              Vec2(0.0f), Vec2(1000.0f)); // the texture repeats every 2 units: squares of 0.25
+    RenderSettings s;
+    s.maxDepth = 1;
+    Rendered r = render(scene, 64, 64, 16, s);
+    // Rows 0-7 look 13 to 57 units away, where a pixel's footprint spans 6 to 30 squares.
+    float worst = 0.0f;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 64; ++x) worst = std::max(worst, std::abs(r.pixel(x, y).x - 0.4f));
+    EXPECT_LT(worst, 0.05f) << "far pixels must be the checker's mean, 0.4";
+    EXPECT_NEAR(regionStats(r, 0, 0, 64, 8).mean.x, 0.4f, 0.01f);
+    // The bottom rows are 2 units away, where a square spans about 8 pixels: still a checker.
+    float lo = 1.0f, hi = 0.0f;
+    for (int x = 0; x < 64; ++x) {
+        lo = std::min(lo, r.pixel(x, 62).x);
+        hi = std::max(hi, r.pixel(x, 62).x);
+    }
+    EXPECT_LT(lo, 0.1f);
+    EXPECT_GT(hi, 0.7f);
+}
+
+// A plane lit by a small light off to one side, seen from above: what a normal or bump map does
+// to it is compared with the same plane whose vertex normal is the mapped normal.
+Scene litPlane() {
+    Scene scene = emptyScene(lookAt({0, 3, 0.01f}, {0, 0, 0}, {0, 1, 0}, 40));
+    SphereLight light;
+    light.center = Vec3(2.0f, 1.5f, 1.0f);
+    light.radius = 0.1f;
+    light.intensity = Spectrum(10.0f);
+    scene.lights.push_back(light);
+    return scene;
+}
+
+// The plane y = 0 from (-1, -1) to (1, 1) in x and z, u along +x and v along -z.
+void addPlane(Scene& scene, const Material& m, Vec3 normal = Vec3(0.0f), Vec2 uv0 = Vec2(0.0f), Vec2 uv1 = Vec2(1.0f)) {
+    addUvQuad(scene, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}, addMaterial(scene, m), uv0, uv1, normal);
+}
+
+TEST(TextureRender, FlatNormalMapIsNoMap) {
+    Material plain;
+    plain.kd = Spectrum(0.6f);
+    Scene reference = litPlane();
+    addPlane(reference, plain);
+    Scene mapped = litPlane();
+    Material m = plain;
+    m.normalMap = mapOf(constantTexture(mapped, {0.5f, 0.5f, 1.0f}, false));
+    addPlane(mapped, m);
+    Rendered a = render(mapped, 32, 32, 64), b = render(reference, 32, 32, 64);
+    for (size_t i = 0; i < a.mean.size(); ++i) ASSERT_NEAR(a.mean[i], b.mean[i], 1e-4f * (1.0f + b.mean[i])) << i;
+}
+
+// Tilts along +u (x) and +v (-z): the map's x follows u and its y follows v (green up).
+TEST(TextureRender, TiltedNormalMapIsTiltedNormal) {
+    const float s = std::sin(0.5f), c = std::cos(0.5f);
+    struct Case {
+        std::vector<float> texel;
+        Vec3 normal;
+        const char* what;
+    } cases[] = {{{0.5f + 0.5f * s, 0.5f, 0.5f + 0.5f * c}, {s, c, 0}, "x along u"},
+                 {{0.5f, 0.5f + 0.5f * s, 0.5f + 0.5f * c}, {0, c, -s}, "y along v"},
+                 {{0.5f - 0.5f * s, 0.5f, 0.5f + 0.5f * c}, {-s, c, 0}, "x against u"}};
+    for (const Case& k : cases) {
+        Material plain;
+        plain.kd = Spectrum(0.6f);
+        Scene reference = litPlane();
+        addPlane(reference, plain, k.normal);
+        Scene mapped = litPlane();
+        Material m = plain;
+        m.normalMap = mapOf(constantTexture(mapped, k.texel, false));
+        addPlane(mapped, m);
+        Rendered a = render(mapped, 32, 32, 64), b = render(reference, 32, 32, 64);
+        float lit = regionStats(b, 0, 0, 32, 32).mean.x;
+        ASSERT_GT(lit, 1e-3f);
+        for (size_t i = 0; i < a.mean.size(); ++i)
+            ASSERT_NEAR(a.mean[i], b.mean[i], 2e-3f * (lit + b.mean[i])) << k.what << " at " << i / 3;
+    }
+}
+
+// A height ramp h = bm * u across the plane tilts the normal away from +u by atan(bm * du/dx):
+// with uv from 0.1 to 0.9 over 2 units in x, du/dx = 0.4, and bm = 1.5 gives a slope of 0.6.
+TEST(TextureRender, BumpRampIsTiltedNormal) {
+    Scene mapped = litPlane();
+    Texture ramp;
+    ramp.colour = false;
+    ramp.width = 64;
+    ramp.height = 2;
+    ramp.channels = 1;
+    for (int y = 0; y < ramp.height; ++y)
+        for (int x = 0; x < ramp.width; ++x) ramp.texels.push_back((x + 0.5f) / float(ramp.width));
+    Material m;
+    m.kd = Spectrum(0.6f);
+    Material plain = m;
+    m.bumpMap = mapOf(mapped.textures->add(std::move(ramp)), TextureChannel::R);
+    m.bumpMap.bumpScale = 1.5f;
+    m.bumpMap.clamp = true;
+    addPlane(mapped, m, Vec3(0.0f), Vec2(0.1f), Vec2(0.9f));
+    Scene reference = litPlane();
+    addPlane(reference, plain, glm::normalize(Vec3(-0.6f, 1.0f, 0.0f)));
+    Rendered a = render(mapped, 32, 32, 64), b = render(reference, 32, 32, 64);
+    float lit = regionStats(b, 0, 0, 32, 32).mean.x;
+    for (size_t i = 0; i < a.mean.size(); ++i) ASSERT_NEAR(a.mean[i], b.mean[i], 2e-3f * (lit + b.mean[i])) << i / 3;
+}
+
+// A floor under a point light and a screen halfway up: the screen's coverage is what fraction of
+// the light's irradiance its shadow keeps out. Only shadow rays see the screen: the camera is
+// below it, looking down at the middle of its shadow.
+Scene shadowScene(float coverage, bool withAlphaChannel) {
+    Scene scene = emptyScene(lookAt({0, 1, 0}, {0, 0, 0}, {0, 0, -1}, 40));
+    SphereLight light;
+    light.center = Vec3(0, 4, 0);
+    light.intensity = Spectrum(16.0f);
+    scene.lights.push_back(light);
+    Material floor;
+    floor.kd = Spectrum(0.5f);
+    addUvQuad(scene, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, {-5, 0, -5}, addMaterial(scene, floor), Vec2(0.0f), Vec2(1.0f));
+    Material screen;
+    screen.kd = Spectrum(0.5f);
+    screen.alphaMap = withAlphaChannel ? mapOf(constantTexture(scene, {1.0f, 1.0f, 1.0f, coverage}, false), TextureChannel::Alpha)
+                                       : mapOf(constantTexture(scene, {coverage}, false), TextureChannel::Luminance);
+    addUvQuad(scene, {-0.5f, 2, 0.5f}, {0.5f, 2, 0.5f}, {0.5f, 2, -0.5f}, {-0.5f, 2, -0.5f}, addMaterial(scene, screen),
+              Vec2(0.0f), Vec2(1.0f));
+    return scene;
+}
+
+TEST(TextureRender, CutoutsCastTheirCoverageAsShadow) {
+    RenderSettings direct;
+    direct.maxDepth = 1;
+    // The shadow covers x and z in [-1, 1] on the floor, the whole view.
+    Rendered open = render(shadowScene(0.0f, true), 32, 32, 256, direct);
+    // Irradiance below the light is I / d^2 = 1, so the floor's radiance is 0.5 / pi.
+    expectNear(regionStats(open, 15, 15, 17, 17), Spectrum(0.5f / kPi), 4.0f, 1e-3f, "alpha 0: no shadow at all");
+    for (float coverage : {0.25f, 0.5f, 1.0f})
+        for (bool alphaChannel : {true, false}) {
+            Rendered r = render(shadowScene(coverage, alphaChannel), 32, 32, 256, direct);
+            expectNear(regionStats(r, 0, 0, 32, 32), (1.0f - coverage) * regionStats(open, 0, 0, 32, 32).mean, 4.0f, 1e-3f,
+                       alphaChannel ? "coverage from the alpha channel" : "coverage from a grey map");
+        }
+}
+
+// A black screen of coverage 0.5 in front of a white emitter, seen by the camera: half the light
+// gets through. Cutout images do not depend on the thread count.
+TEST(TextureRender, CameraRaysPassCutouts) {
+    Scene scene = emptyScene(lookAt({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 20));
+    Material wall;
+    wall.kd = Spectrum(0.0f);
+    wall.emission = Spectrum(1.0f);
+    addQuad(scene, {-5, -5, -1}, {5, -5, -1}, {5, 5, -1}, {-5, 5, -1}, addMaterial(scene, wall));
+    Material screen;
+    screen.kd = Spectrum(0.0f);
+    screen.alphaMap = mapOf(constantTexture(scene, {1.0f}, false), TextureChannel::Luminance);
+    screen.alpha = 0.5f; // d 0.5 with map_d
+    addUvQuad(scene, {-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}, addMaterial(scene, screen), Vec2(0.0f), Vec2(1.0f));
+    Rendered one = render(scene, 16, 16, 256, {}, 1), two = render(scene, 16, 16, 256, {}, 2);
+    expectNear(regionStats(one, 0, 0, 16, 16), Spectrum(0.5f), 4.0f, 0.0f, "half the wall shows through");
+    EXPECT_EQ(one.mean, two.mean);
+}
+
+} // namespace
+} // namespace pt::test
