@@ -51,5 +51,6 @@ private:
 };
 
 int runConverge(int argc, char** argv);
+int runTextureBench(int argc, char** argv); // bench/texture_bench.cpp
 
 } // namespace pt::bench
