@@ -30,6 +30,8 @@ namespace {
 const char* kRenderUsage = R"(usage: pt render SCENE [options]
 
 Renders SCENE (Wavefront .obj with the lab's extended .mtl) and writes one image.
+MTL texture maps: map_Kd, map_Ks (colour), map_Pr, map_Pm, norm, bump/map_bump, map_d (data),
+with options -s, -o, -clamp on|off, -bm, -imfchan r|g|b|m|l (see the README).
 
 options (default in brackets):
   -o, --output PATH      output image [out.exr]; the extension picks the format:

@@ -102,6 +102,22 @@ printf 'newmtl Red\nKd 1 0 0\nmap_Kd nothere.png\n' > tex.mtl
 printf 'mtllib tex.mtl\n%susemtl Red\nf 1 2 3\n' "$tri" > missing_tex.obj
 check missing_texture 0 'tex.mtl:3: map_Kd: texture "nothere.png" not found; using the plain colour' \
   render missing_tex.obj -spp 2 --res 16x16 -o out/a.exr
+# The data maps of issue 11: each way a map line can be wrong.
+echo "not an image" > corrupt.png
+oiiotool --create 4x4 1 -d uint8 -o grey.png >/dev/null 2>&1
+oiiotool --create 4x4 3 -d uint8 -o rgb.png >/dev/null 2>&1
+maps_case() { # NAME STATUS TEXT MAP-LINE
+  printf 'newmtl M\nKd 0.5 0.5 0.5\n%s\n' "$4" > "maps_$1.mtl"
+  printf 'mtllib maps_%s.mtl\n%svt 0 0\nvt 1 0\nvt 0 1\nusemtl M\nf 1/1 2/2 3/3\n' "$1" "$tri" > "maps_$1.obj"
+  check "$1" "$2" "$3" render "maps_$1.obj" -spp 2 --res 16x16 -o out/a.exr
+}
+maps_case corrupt_normal_map 0 'maps_corrupt_normal_map.mtl:3: norm: cannot read texture "corrupt.png"' 'norm corrupt.png'
+maps_case grey_normal_map 0 'maps_grey_normal_map.mtl:3: norm: normal map "grey.png" has 1 channel(s); expected RGB' 'norm grey.png'
+maps_case cutout_without_alpha 0 'maps_cutout_without_alpha.mtl:3: map_d: texture "grey.png" has no alpha channel' 'map_d -imfchan m grey.png'
+maps_case missing_roughness_map 0 'maps_missing_roughness_map.mtl:3: map_Pr: texture "nothere.png" not found; using the plain value' 'map_Pr nothere.png'
+maps_case depth_channel 1 'maps_depth_channel.mtl:3: map_Pm -imfchan: expected r, g, b, m (alpha) or l (luminance), found "z"' 'map_Pm -imfchan z grey.png'
+maps_case bump_scale_missing 1 'maps_bump_scale_missing.mtl:3: bump -bm: expected a number' 'bump -bm grey.png'
+maps_case bump_and_normal 0 'has both a normal map (norm) and a bump map; the bump map is ignored' $'norm -bm 0.5 rgb.png\nbump grey.png'
 printf '%sf 1 2 3\n' "$tri" > no_camera.obj
 check no_camera 0 "no camera defined; framing the whole scene" render no_camera.obj -spp 2 --res 16x16 -o out/a.exr
 check no_lights 0 "16x16, 2 spp" render no_camera.obj -spp 2 --res 16x16 -o no_lights.exr

@@ -1,5 +1,6 @@
-// libFuzzer target for the lab's extended MTL (materials, lights, cameras). Any input must either
-// parse or throw a LoadError; texture paths resolve against a folder that does not exist.
+// libFuzzer target for the lab's extended MTL (materials, lights, cameras, texture maps). Any
+// input must either parse or throw a LoadError; texture paths resolve against scenes/, where the
+// textures of the repository's scenes lie, so map lines load real images.
 #include "scene/mtl_loader.h"
 
 #include <cstdint>
@@ -11,7 +12,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     pt::Scene scene;
     std::unordered_map<std::string, uint32_t> materialIndex;
     try {
-        pt::parseMtl(text, "/nonexistent/fuzz.mtl", scene, materialIndex, warnings);
+        pt::parseMtl(text, PT_SOURCE_DIR "/scenes/fuzz.mtl", scene, materialIndex, warnings);
     } catch (const pt::LoadError&) {
     }
     return 0;
