@@ -9,10 +9,43 @@ mis_lights:  where each direct-light strategy fails somewhere: a large emissive 
              a diffuse floor (light sampling by area is noisy next to it, BSDF sampling is not), a
              tiny bright sphere light (BSDF sampling almost never finds it), and a mirror sphere
              and a Fresnel-reflective floor that show both lights.
+rough:       rows of spheres, rough metal (Pm 1), plastic and glass, at GGX alpha 0.01, 0.05, 0.2
+             and 0.5 from the left, under a small sphere light.
+textured:    every texture map of issue 11, one per object so that each can be checked on its
+             own, in the same room under a small sphere light (radius 0.05) just in front of it,
+             near the ceiling. Camera 0 (Front) looks from higher up than the others, so that the
+             floor shows; camera 1 (Shadows) looks down at the cutouts' shadows on the floor. The
+             textures are written by this script (tex_*.png, 8 bits, 8 to 16 texels across an
+             object, so that a 128x128 render magnifies every texel, 1.5 to 2.2 pixels each).
+             Top row, each quad turned to face the half vector between the camera and the light
+             so that its highlight sits in its middle, from the left:
+               TexKdKs      map_Kd (colour tiles) and map_Ks (white and blue stripes) on a
+                            Fresnel-blended plastic (R0 0.1), Pr 0.3;
+               TexPr        map_Pr (stripes of Pr 0.15, 0.35, 0.6, 0.85) on a metal (Pm 1);
+                            its Pr 0.5 is replaced by the map;
+               TexPm        map_Pm (a 0/1 checker) between a red plastic and gold, Pr 0.45; its
+                            Pm 0.5 is replaced by the map;
+               TexPmChannel the same with map_Pm -imfchan g of tex_channels.png, whose red,
+                            green and blue are vertical stripes, horizontal stripes and a checker
+                            (green: horizontal stripes of gold).
+             Middle row, facing the camera:
+               TexNormal    norm: a tangent-space normal map (green up) of 2x2 domes on a white
+                            Lambert slab (its sides and back are PanelBack);
+               TexBump      bump -bm 0.03: a height map of 2x2 raised tiles on the same slab;
+               TexClamp     map_Kd -s 2 2 -o -0.5 -0.5 -clamp on: the colour tiles at half size
+                            in the middle, their border texels stretched around them.
+             Front, floating above the floor so that their shadows on it show below them
+             (the light, in front, is above the objects: shadows fall behind them):
+               TexCutout    map_d from the PNG's alpha: a frame with bars and holes;
+               TexVeil      d 0.8 with map_d from the alpha: a frame of coverage 0.8, a window
+                            of 0.8 * 160/255 = 0.50, an empty window with an opaque dot.
 """
 import math
 import os
 import subprocess
+
+import numpy as np
+import OpenImageIO as oiio
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -219,8 +252,159 @@ def rough():
                     "\tNi 1.5\n\tspecularroughness %g\n\n" % (k, alpha))
 
 
+TEXTURED_HEADER = """# Texture maps of issue 11, one per object. Top row (facing the camera-light half vector):
+# TexKdKs (map_Kd + map_Ks), TexPr (map_Pr), TexPm (map_Pm), TexPmChannel (map_Pm -imfchan g).
+# Middle row: TexNormal (norm), TexBump (bump -bm), TexClamp (map_Kd -s -o -clamp on).
+# Front: TexCutout (map_d, binary alpha), TexVeil (d 0.8 times map_d, with a 0.5 window).
+"""
+
+
+def write_png(name, pixels):
+    """An 8-bit PNG next to this script from a (height, width, channels) uint8 array, row 0 on top."""
+    pixels = np.ascontiguousarray(pixels, dtype=np.uint8)
+    h, w, c = pixels.shape
+    path = os.path.join(HERE, name)
+    out = oiio.ImageOutput.create(path)
+    if not out or not out.open(path, oiio.ImageSpec(w, h, c, oiio.UINT8)) or not out.write_image(pixels):
+        raise SystemExit(f"make_scenes: cannot write {path}: {out.geterror() if out else oiio.geterror()}")
+    out.close()
+
+
+def texel_uv(w, h):
+    """The uv of each texel's centre, v = 0 at the bottom row as in OBJ: arrays of shape (h, w)."""
+    u = (np.arange(w) + 0.5) / w
+    v = 1.0 - (np.arange(h) + 0.5) / h
+    return np.meshgrid(u, v)
+
+
+def textured_textures():
+    # Colour tiles: 4x4 cells of 2x2 texels, each its own colour (sRGB-encoded values).
+    palette = np.array([[230, 60, 50], [250, 200, 40], [60, 170, 70], [40, 110, 220],
+                        [240, 240, 240], [30, 30, 35], [200, 90, 200], [90, 220, 220],
+                        [150, 90, 40], [250, 140, 170], [120, 120, 120], [20, 80, 40],
+                        [255, 120, 0], [100, 60, 180], [200, 230, 120], [10, 40, 110]])
+    y, x = np.mgrid[0:8, 0:8]
+    write_png("tex_albedo.png", palette[(y // 2) * 4 + x // 2])
+    # Specular colour: horizontal stripes of white and blue, 2 texels each.
+    stripes = np.where(((y // 2) % 2 == 0)[..., None], [255, 255, 255], [40, 80, 230])
+    write_png("tex_spec.png", stripes)
+    # Perceptual roughness: vertical stripes of Pr 0.15, 0.35, 0.6, 0.85 (GGX alpha 0.02 to 0.72).
+    pr = np.round(np.array([0.15, 0.35, 0.6, 0.85]) * 255)[x // 2]
+    write_png("tex_rough.png", pr[..., None])
+    # Metallic: a checker of 2x2-texel cells, 0 and 1.
+    checker = ((x // 2 + y // 2) % 2) * 255
+    write_png("tex_metal.png", checker[..., None])
+    # Three different data channels: red vertical stripes, green horizontal stripes, blue checker.
+    write_png("tex_channels.png", np.stack([((x // 2) % 2) * 255, ((y // 2) % 2) * 255, checker], axis=-1))
+    # Normal map: 2x2 domes h = A cos^2(pi r / 2R) per cell (cell units), tilting up to 40 degrees;
+    # n = normalize(-dh/du, -dh/dv, 1), x along +u, y along +v (green up), stored as (n + 1) / 2.
+    u, v = texel_uv(16, 16)
+    fx, fy = (u * 2) % 1 - 0.5, (v * 2) % 1 - 0.5
+    r, radius = np.hypot(fx, fy), 0.42
+    amp = math.tan(math.radians(40)) * 2 * radius / math.pi
+    dhdr = np.where(r < radius, -amp * math.pi / (2 * radius) * np.sin(math.pi * r / radius), 0.0)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        gx = np.where(r > 0, dhdr * fx / r, 0.0)
+        gy = np.where(r > 0, dhdr * fy / r, 0.0)
+    n = np.stack([-gx, -gy, np.ones_like(gx)], axis=-1)
+    n /= np.linalg.norm(n, axis=-1, keepdims=True)
+    write_png("tex_normal.png", np.round((n + 1) / 2 * 255))
+    # Height map: 2x2 raised tiles (1) with one-texel grout lines (0) at texels 0 and 8.
+    y, x = np.mgrid[0:16, 0:16]
+    write_png("tex_height.png", (np.where((x % 8 == 0) | (y % 8 == 0), 0, 255))[..., None])
+    # Cutouts, 16x10 texels, coverage in the alpha channel.
+    y, x = np.mgrid[0:10, 0:16]
+    frame = (x <= 1) | (x >= 14) | (y <= 1) | (y >= 8)
+    bars = frame | (x == 7) | (x == 8)
+    grid = np.where(bars, 255, 0)
+    green = [np.full_like(grid, c) for c in (70, 150, 60)]
+    write_png("tex_grid.png", np.stack(green + [grid], -1))
+    veil = np.where(bars, 255, np.where(x < 7, 160, np.where((x >= 11) & (x <= 12) & (y >= 4) & (y <= 5), 255, 0)))
+    write_png("tex_veil.png", np.stack([np.full_like(veil, 230)] * 3 + [veil], -1))
+
+
+def facing_quad(o, center, normal, width, height):
+    """A quad with uvs (u to the right, v up) centred on `center`, facing `normal`."""
+    c, n = np.array(center, dtype=float), np.array(normal, dtype=float)
+    n /= np.linalg.norm(n)
+    u = np.cross([0.0, 1.0, 0.0], n)
+    u /= np.linalg.norm(u)
+    v = np.cross(n, u)
+    du, dv = u * width / 2, v * height / 2
+    o.quad(*(tuple(p) for p in (c - du - dv, c + du - dv, c + du + dv, c - du + dv)), uv=True)
+
+
+def slab(o, material, lo, hi):
+    """A thin box whose front (+z) face has uvs and `material`; the other faces are PanelBack."""
+    (x0, y0, z0), (x1, y1, z1) = lo, hi
+    o.use(material)
+    o.quad((x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1), uv=True)
+    o.use("PanelBack")
+    o.quad((x1, y0, z0), (x0, y0, z0), (x0, y1, z0), (x1, y1, z0))
+    o.quad((x1, y0, z1), (x1, y0, z0), (x1, y1, z0), (x1, y1, z1))
+    o.quad((x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0))
+    o.quad((x0, y1, z1), (x1, y1, z1), (x1, y1, z0), (x0, y1, z0))
+    o.quad((x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1))
+
+
+TEXTURED_LIGHT = (-0.1, 0.9, 1.1)
+TEXTURED_CAMERA = ((0.0, 0.6, 3.0), (0.0, -0.25, 0.0))  # position, target: the floor in view
+
+
+def textured():
+    textured_textures()
+    o = Obj()
+    room(o)
+    camera, light = np.array(TEXTURED_CAMERA[0]), np.array(TEXTURED_LIGHT)
+    for k, name in enumerate(("TexKdKs", "TexPr", "TexPm", "TexPmChannel")):
+        center = np.array([-0.72 + 0.48 * k, 0.62, -0.75])
+        to_cam, to_light = camera - center, light - center
+        half = to_cam / np.linalg.norm(to_cam) + to_light / np.linalg.norm(to_light)
+        o.use(name)
+        facing_quad(o, center, half, 0.44, 0.44)
+    slab(o, "TexNormal", (-0.94, -0.14, -0.77), (-0.34, 0.34, -0.75))
+    slab(o, "TexBump", (-0.3, -0.14, -0.77), (0.3, 0.34, -0.75))
+    o.use("TexClamp")
+    o.quad((0.34, -0.14, -0.75), (0.94, -0.14, -0.75), (0.94, 0.34, -0.75), (0.34, 0.34, -0.75), uv=True)
+    o.use("TexCutout")
+    o.quad((-0.66, -0.42, 0.15), (-0.04, -0.42, 0.15), (-0.04, 0.0, 0.15), (-0.66, 0.0, 0.15), uv=True)
+    o.use("TexVeil")
+    o.quad((0.04, -0.42, 0.15), (0.66, -0.42, 0.15), (0.66, 0.0, 0.15), (0.04, 0.0, 0.15), uv=True)
+    o.write(os.path.join(HERE, "textured.obj"), "textured.mtl",
+            "One object per texture map of issue 11 in the lab's room, under a sphere light")
+    with open(os.path.join(HERE, "textured.mtl"), "w") as f:
+        f.write(TEXTURED_HEADER + "\n")
+        f.write("newlight Lamp\n\tlightposition %g %g %g\n\tlightcolor 1.0 0.95 0.85\n"
+                "\tlightradius 0.05\n\tlightintensity 2.0\n\n" % TEXTURED_LIGHT)
+        f.write("newcamera Front\n\tcameraposition %g %g %g\n\tcameratarget %g %g %g\n"
+                "\tcameraup 0.0 1.0 0.0\n\tcamerafov 45.0\n\n" % (*TEXTURED_CAMERA[0], *TEXTURED_CAMERA[1]))
+        # Looking down from behind the cutouts at their shadows on the floor.
+        f.write("newcamera Shadows\n\tcameraposition 0.0 0.2 -0.45\n\tcameratarget 0.0 -1.0 -0.4\n"
+                "\tcameraup 0.0 0.0 -1.0\n\tcamerafov 70.0\n\n")
+        f.write("newmtl Floor\n\tKd 0.7 0.7 0.7\n\n")
+        f.write("newmtl Ceiling\n\tKd 0.8 0.8 0.8\n\n")
+        f.write("newmtl BackWall\n\tKd 0.6 0.6 0.6\n\n")
+        f.write("newmtl LeftWall\n\tKd 0.65 0.25 0.2\n\n")
+        f.write("newmtl RightWall\n\tKd 0.2 0.3 0.65\n\n")
+        f.write("newmtl PanelBack\n\tKd 0.5 0.5 0.5\n\n")
+        f.write("newmtl TexKdKs\n\tKd 0.7 0.7 0.7\n\tmap_Kd tex_albedo.png\n\tKs 1 1 1\n"
+                "\tmap_Ks tex_spec.png\n\treflat0deg 0.1\n\treflat90deg 1.0\n\tPr 0.3\n\n")
+        f.write("newmtl TexPr\n\tKd 0 0 0\n\tKs 0.9 0.9 0.9\n\tNi 1.5\n\tPm 1.0\n\tPr 0.5\n"
+                "\tmap_Pr tex_rough.png\n\n")
+        f.write("newmtl TexPm\n\tKd 0.6 0.15 0.1\n\tKs 0.95 0.75 0.45\n\tNi 1.5\n\tPr 0.45\n\tPm 0.5\n"
+                "\tmap_Pm tex_metal.png\n\n")
+        f.write("newmtl TexPmChannel\n\tKd 0.6 0.15 0.1\n\tKs 0.95 0.75 0.45\n\tNi 1.5\n\tPr 0.45\n"
+                "\tmap_Pm -imfchan g tex_channels.png\n\n")
+        f.write("newmtl TexNormal\n\tKd 0.75 0.75 0.75\n\tnorm tex_normal.png\n\n")
+        f.write("newmtl TexBump\n\tKd 0.75 0.75 0.75\n\tbump -bm 0.03 tex_height.png\n\n")
+        f.write("newmtl TexClamp\n\tKd 1 1 1\n\tmap_Kd -s 2 2 -o -0.5 -0.5 -clamp on tex_albedo.png\n\n")
+        f.write("newmtl TexCutout\n\tKd 0.25 0.55 0.2\n\tmap_d tex_grid.png\n\n")
+        f.write("newmtl TexVeil\n\tKd 0.8 0.75 0.6\n\td 0.8\n\tmap_d tex_veil.png\n")
+
+
 if __name__ == "__main__":
     cornell_box()
     glass()
     mis_lights()
     rough()
+    textured()

@@ -12,6 +12,8 @@ As in mitsuba_lab.py, the semantics come from the scene format's text:
 - Cycles leaves out refraction's 1/eta^2 radiance scale. That cancels on the lab scenes, whose
   glass objects are closed, with the camera and the lights outside.
 - Textures are decoded from sRGB to linear before Cycles filters them, as pt and Mitsuba do.
+  Of issue 11's maps only a plain map_Kd is modelled: map_Ks, map_Pr, map_Pm, norm, bump,
+  map_d and the -s, -o and -clamp options stop the script (the Mitsuba check has them).
 - Only flat-shaded scenes are modelled. pt's rule for smooth normals that disagree with the
   geometry (see the README) is not Cycles'.
 
@@ -33,7 +35,7 @@ import mathutils
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(__file__))
-from lab_scene import GROUND, SKY, fail, parse_mtl, parse_obj  # noqa: E402
+from lab_scene import GROUND, SKY, fail, parse_mtl, parse_obj, pm_rule  # noqa: E402
 
 
 def node(tree, kind, **inputs):
@@ -95,14 +97,26 @@ def linear_texture(path):
 
 
 def lab_material(name, m):
+    # Of issue 11's maps only a plain map_Kd (no -s, -o or -clamp) is modelled here.
+    others = sorted(set(m["maps"]) - {"kd"})
+    if others:
+        keyword = {"ks": "map_Ks", "pr": "map_Pr", "pm": "map_Pm", "norm": "norm", "bump": "bump", "d": "map_d"}
+        fail(f"material {name!r}: {', '.join(keyword[k] for k in others)} is outside what the Cycles check "
+             "models; use --renderer mitsuba")
+    kd_map = m["maps"].get("kd")
+    if kd_map and (kd_map["s"] != [1.0, 1.0] or kd_map["o"] != [0.0, 0.0] or kd_map["clamp"]):
+        fail(f"{kd_map['where']}: map_Kd with -s, -o or -clamp is outside what the Cycles check models; "
+             "use --renderer mitsuba")
+    m = {**m}
+    m["kd"], m["ks"], m["r0"], m["w"] = pm_rule(m)
     mat, tree = node_material(name)
     link = tree.links.new
     out = tree.nodes.new("ShaderNodeOutputMaterial")
 
     diffuse = node(tree, "ShaderNodeBsdfDiffuse", Color=(*m["kd"], 1.0), Roughness=0.0)
-    if m["map_kd"]:
+    if kd_map:
         tex = tree.nodes.new("ShaderNodeTexImage")
-        tex.image = linear_texture(m["map_kd"])
+        tex.image = linear_texture(kd_map["file"])
         tex.interpolation = "Linear"
         tex.extension = "REPEAT"
         mul = tree.nodes.new("ShaderNodeMix")

@@ -1,9 +1,16 @@
 """The lab scene format (OBJ + extended MTL), read as issue 2 defines it, for the cross-checks.
 
-Only what the three lab scenes use is modelled; any other keyword stops the reader rather than
-being rendered differently from pt. Shared by mitsuba_lab.py and cycles_lab.py.
+Only what the lab scenes use is modelled; any other keyword stops the reader rather than being
+rendered differently from pt. Shared by mitsuba_lab.py and cycles_lab.py.
+
+Texture maps follow issue 11 (the semantics pt implements; see parse_map): map_Kd, map_Ks,
+map_Pr, map_Pm, norm, bump / map_bump and map_d, with the options -s, -o, -clamp, and -bm and
+-imfchan where they have an effect. Each material keeps its keywords as written (kd, ks, r0, w,
+pm, ...); the Pm rule is applied by the renderers, per hit where a map feeds it (pm_rule for
+constant parameters).
 """
 import os
+import re
 import sys
 
 import numpy as np
@@ -11,9 +18,69 @@ import numpy as np
 SKY = (0.5, 0.6, 0.7)
 GROUND = (0.05, 0.025, 0.001)
 
+# Map keyword (lower case) -> (name in a material's "maps", options it takes besides -s -o -clamp).
+MAPS = {
+    "map_kd": ("kd", ()), "diffusereflectancemap": ("kd", ()),
+    "map_ks": ("ks", ()), "specularreflectancemap": ("ks", ()),
+    "map_pr": ("pr", ("-imfchan",)),
+    "map_pm": ("pm", ("-imfchan",)),
+    "norm": ("norm", ("-bm",)),
+    "bump": ("bump", ("-bm", "-imfchan")), "map_bump": ("bump", ("-bm", "-imfchan")),
+    "map_d": ("d", ("-imfchan",)),
+}
+COLOUR_MAPS = ("kd", "ks")  # sRGB-decoded colour; the others are data (linear values)
+CHANNELS = ("r", "g", "b", "m", "l")
+
 
 def fail(msg):
     sys.exit(f"crosscheck: {msg}")
+
+
+def parse_map(line, key, where, mtl_dir):
+    """One map line: options, then the file name, which is the rest of the line (it may hold
+    spaces). -s and -o take one to three numbers (u [v [w]]; a missing v is 1 for -s and 0 for -o,
+    w is ignored), the lookup is at uv * s + o; -clamp on|off; -bm a number (norm, bump); -imfchan
+    r|g|b|m|l (map_Pr, map_Pm, bump, map_d). Any other option stops the check."""
+    name, extra = MAPS[key]
+    key = line.split()[0]  # as written, for messages
+    m = {"kind": name, "s": [1.0, 1.0], "o": [0.0, 0.0], "clamp": False, "bm": 1.0, "imfchan": None, "where": where}
+    words = [(w.group(), w.start()) for w in re.finditer(r"\S+", line)][1:]  # after the keyword
+    is_number = lambda w: re.fullmatch(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?", w) is not None
+    i = 0
+    while i < len(words) and len(words[i][0]) >= 2 and words[i][0][0] == "-" and not is_number(words[i][0]):
+        option = words[i][0]
+        i += 1
+        if option in ("-s", "-o"):
+            v = []
+            while i < len(words) and len(v) < 3 and is_number(words[i][0]):
+                v.append(float(words[i][0]))
+                i += 1
+            if not v:
+                fail(f"{where}: {option} expects a number")
+            m[option[1]] = [v[0], v[1] if len(v) > 1 else (1.0 if option == "-s" else 0.0)]
+        elif option == "-clamp":
+            if i >= len(words) or words[i][0] not in ("on", "off"):
+                fail(f"{where}: -clamp expects on or off")
+            m["clamp"] = words[i][0] == "on"
+            i += 1
+        elif option == "-bm" and option in extra:
+            if i >= len(words) or not is_number(words[i][0]):
+                fail(f"{where}: -bm expects a number")
+            m["bm"] = float(words[i][0])
+            i += 1
+        elif option == "-imfchan" and option in extra:
+            if i >= len(words) or words[i][0] not in CHANNELS:
+                fail(f"{where}: -imfchan expects one of {' '.join(CHANNELS)}")
+            m["imfchan"] = words[i][0]
+            i += 1
+        else:
+            fail(f"{where}: option {option} on {key} is outside what this check models")
+    if i >= len(words):
+        fail(f"{where}: {key} expects a file name")
+    m["file"] = os.path.join(mtl_dir, line[words[i][1]:].strip())
+    if not os.path.isfile(m["file"]):
+        fail(f"{where}: {key}: no file {m['file']} (pt would render without the map)")
+    return m
 
 
 # ---------------------------------------------------------------- scene text
@@ -21,14 +88,15 @@ def parse_mtl(path):
     materials, lights, cameras = {}, [], []
     cur = None
     for lineno, raw in enumerate(open(path, encoding="utf-8", errors="replace"), 1):
-        t = raw.split("#", 1)[0].split()
+        line = raw.split("#", 1)[0]
+        t = line.split()
         if not t:
             continue
         key, vals = t[0].lower(), t[1:]
         num = lambda: [float(v) for v in vals]
         if key == "newmtl":
-            cur = {"kd": [0.7] * 3, "ks": [1.0] * 3, "r0": [0.0] * 3, "w": 0.0, "t": 0.0, "eta": 1.0, "pm": None,
-                   "map_kd": None, "alpha": 0.001}
+            cur = {"kd": [0.7] * 3, "ks": [1.0] * 3, "r0": [0.0] * 3, "w": 0.0, "eta": 1.0, "pm": None,
+                   "alpha": 0.001, "maps": {}, "opacity": []}
             materials[vals[0]] = cur
         elif key == "newlight":
             cur = {"pos": None, "color": [1, 1, 1], "radius": 0.0, "intensity": 1.0}
@@ -45,16 +113,17 @@ def parse_mtl(path):
             cur["r0"] = r0 * 3 if len(r0) == 1 else r0
         elif key == "reflat90deg":
             cur["w"] = num()[0]
-        elif key in ("transparency", "tr"):
-            cur["t"] = num()[0]
-        elif key == "d":
-            cur["t"] = 1.0 - num()[0]
+        elif key in ("transparency", "tr"):  # T, whatever else the material says
+            cur["opacity"].append(("tr", num()[0]))
+        elif key == "d":  # T = 1 - d, or with map_d the coverage multiplier (see below)
+            cur["opacity"].append(("d", num()[0]))
         elif key in ("indexofrefraction", "ni"):
             cur["eta"] = num()[0]
         elif key == "pm":
             cur["pm"] = num()[0]
-        elif key in ("map_kd", "diffusereflectancemap"):
-            cur["map_kd"] = os.path.join(os.path.dirname(path), vals[-1])
+        elif key in MAPS:
+            m = parse_map(line, key, f"{path}:{lineno}", os.path.dirname(path))
+            cur["maps"][m["kind"]] = m
         elif key == "specularroughness":  # GGX alpha, as is
             cur["alpha"] = num()[0]
         elif key == "pr":  # perceptual roughness: alpha = Pr^2
@@ -73,12 +142,30 @@ def parse_mtl(path):
             cur["fov"] = num()[0]
         else:
             fail(f"{path}:{lineno}: keyword {t[0]!r} is outside what this check models")
-    for m in materials.values():  # the Pm rule of issue 2
-        if m["pm"] is not None:
-            f0 = ((m["eta"] - 1) / (m["eta"] + 1)) ** 2
-            r0 = [f0 + (k - f0) * m["pm"] for k in m["ks"]]
-            m.update(r0=r0, w=1.0, ks=[1.0] * 3, kd=[k * (1 - m["pm"]) for k in m["kd"]])
+    for name, m in materials.items():
+        # Without map_d, d x means T = 1 - x and the last of d and Tr wins; with map_d, d is the
+        # coverage multiplier (alpha = d * map value) and only Tr sets T.
+        events = m.pop("opacity")
+        if "d" in m["maps"]:
+            m["t"] = next((x for k, x in reversed(events) if k == "tr"), 0.0)
+            m["coverage"] = next((x for k, x in reversed(events) if k == "d"), 1.0)
+        else:
+            m["t"] = (events[-1][1] if events[-1][0] == "tr" else 1.0 - events[-1][1]) if events else 0.0
+        if "norm" in m["maps"] and "bump" in m["maps"]:
+            print(f"crosscheck: material {name!r}: norm and bump; norm wins, bump is ignored (as in pt)",
+                  file=sys.stderr)
+            del m["maps"]["bump"]
     return materials, lights, cameras
+
+
+def pm_rule(m):
+    """Kd, Ks, R0 and w of a material whose parameters are constant, after the Pm rule of issue 2:
+    metallic m mixes the dielectric's F0 towards Ks, the blend is on, the mirror white, and the
+    diffuse part fades out with m."""
+    if m["pm"] is None:
+        return m["kd"], m["ks"], m["r0"], m["w"]
+    f0 = ((m["eta"] - 1) / (m["eta"] + 1)) ** 2
+    return ([k * (1 - m["pm"]) for k in m["kd"]], [1.0] * 3, [f0 + (k - f0) * m["pm"] for k in m["ks"]], 1.0)
 
 
 def parse_obj(path):

@@ -11,6 +11,17 @@ with Schlick's F = R0 + (1 - R0)(1 - |cos|)^5, and the rough Spec and Refr lobes
 Mitsuba's GGX distribution. Only what the scenes use is read; any other keyword stops the script
 rather than being rendered differently from pt.
 
+Texture maps (issue 11) are Mitsuba's own plugins: `bitmap` textures (bilinear, repeat or clamp,
+-s and -o as to_uv) for map_Kd and map_Ks (Mitsuba decodes the sRGB, checked against the rule
+here) and for the data maps, whose values are read here with OpenImageIO (v/255, v/65535, floats
+as they are), reduced to the channel -imfchan picks and handed over as float bitmaps; the lab
+BSDF evaluates Kd, Ks, alpha = value^2 (map_Pr) and the Pm rule (map_Pm) per hit. `norm` is
+Mitsuba's `normalmap` and `bump` its `bumpmap` (scale = -bm), both around the lab BSDF with
+Mitsuba's two additions switched off (flip_invalid_normals, use_shadowing_function); map_d is
+`mask` with opacity d * value outermost, and a scene with map_d renders with `volpath`, whose
+shadow rays pass through masks with transmittance 1 - alpha. See build_material for what these
+cannot express; anything else stops the script.
+
 The image is the mean of PASSES independent renders; the spread between passes gives the
 variance of that mean, written as the `variance` layer pt diff reads. Run it with
 tools/crosscheck/run, which installs Mitsuba into a virtual environment.
@@ -30,6 +41,8 @@ sys.path.insert(0, os.path.dirname(__file__))
 from exr import write_mean_of_passes  # noqa: E402
 from lab_scene import GROUND, SKY, fail, parse_mtl, parse_obj, write_ply  # noqa: E402
 
+import OpenImageIO as oiio  # noqa: E402  (Debian's, through the venv's system site packages)
+
 mi.set_variant("llvm_ad_rgb")
 
 # ---------------------------------------------------------------- the lab BSDF
@@ -41,6 +54,12 @@ class LabBsdf(mi.BSDF):
     Mitsuba's own microfacet distribution (separable Smith G, visible-normal sampling), as issue
     11 defines them: Spec f cos = Ks D G / (4 cos_view); Refr per microfacet m refracts with
     throughput 1 (Walter et al. eq. 21 with F = 0) or, where m totally reflects, reflects with 1.
+
+    Textures (bitmap plugins, evaluated per hit): kd_map and ks_map multiply Kd and Ks; pr_map
+    gives alpha = value^2 in place of the constant alpha; with pm (>= 0) or pm_map the Pm rule is
+    applied at the hit to the textured Kd and Ks. Inside Mitsuba's normalmap and bumpmap,
+    si.sh_frame is the mapped frame (in world coordinates), which the frame rules below use as
+    the shading normal.
     """
 
     def __init__(self, props):
@@ -49,10 +68,15 @@ class LabBsdf(mi.BSDF):
         self.ks = mi.Color3f(props["ks_r"], props["ks_g"], props["ks_b"])
         self.r0 = mi.Color3f(props["r0_r"], props["r0_g"], props["r0_b"])
         self.w, self.t, self.eta = props["w"], props["t"], props["eta"]
+        self.pm = props["pm"]  # metallic; < 0: none (no Pm rule) unless pm_map gives it
         self.alpha = props["alpha"]
-        self.rough = self.alpha > 0.001
-        self.distr = mi.MicrofacetDistribution(mi.MicrofacetType.GGX, self.alpha, True) if self.rough else None
-        self.kd_map = props["kd_map"] if "kd_map" in props else None
+        texture = lambda name: props[name] if name in props else None
+        self.kd_map, self.ks_map = texture("kd_map"), texture("ks_map")
+        self.pr_map, self.pm_map = texture("pr_map"), texture("pm_map")  # data: value (Pr) and metallic
+        # With map_Pr every texel is rough (build_material checks it): alpha = value^2 per hit.
+        self.rough = self.alpha > 0.001 or self.pr_map is not None
+        self.distr = (mi.MicrofacetDistribution(mi.MicrofacetType.GGX, self.alpha, True)
+                      if self.rough and self.pr_map is None else None)
         self.pt_normals = bool(props["pt_normals"])
         both = mi.BSDFFlags.FrontSide | mi.BSDFFlags.BackSide
         if self.rough:
@@ -69,27 +93,43 @@ class LabBsdf(mi.BSDF):
             flags |= mi.BSDFFlags.DiffuseReflection
         self.m_flags = flags
 
+    def params(self, si, active):
+        """Kd, Ks, R0, w and the GGX distribution at the hit: the maps, then the Pm rule."""
+        kd = self.kd if self.kd_map is None else self.kd * self.kd_map.eval(si, active)
+        ks = self.ks if self.ks_map is None else self.ks * self.ks_map.eval(si, active)
+        r0, w = self.r0, mi.Float(self.w)
+        metallic = self.pm_map.eval_1(si, active) if self.pm_map is not None else (
+            mi.Float(self.pm) if self.pm >= 0 else None)
+        if metallic is not None:
+            f0 = ((self.eta - 1) / (self.eta + 1)) ** 2
+            r0 = f0 + (ks - f0) * metallic
+            w, ks, kd = mi.Float(1.0), mi.Color3f(1.0), kd * (1 - metallic)
+        distr = self.distr
+        if self.pr_map is not None:
+            value = self.pr_map.eval_1(si, active)
+            distr = mi.MicrofacetDistribution(mi.MicrofacetType.GGX, value * value, True)
+        return kd, ks, r0, w, distr
+
     def lobes(self, si, cos_i, active):
-        """Per-channel lobe weights and the probabilities of picking each lobe."""
-        f = self.w * (self.r0 + (1 - self.r0) * dr.power(1 - cos_i, 5))
-        spec = f * self.ks
+        """Per-channel lobe weights, the probabilities of picking each lobe, and the GGX distribution."""
+        kd, ks, r0, w, distr = self.params(si, active)
+        f = w * (r0 + (1 - r0) * dr.power(1 - cos_i, 5))
+        spec = f * ks
         refr = (1 - f) * self.t
-        diff = (1 - f) * (1 - self.t) * self.kd_at(si, active)
+        diff = (1 - f) * (1 - self.t) * kd
         mean = lambda c: (c.x + c.y + c.z) / 3
         total = mean(spec) + mean(refr) + mean(diff)
         safe = dr.select(total > 0, total, 1.0)
-        return spec, refr, diff, mean(spec) / safe, mean(refr) / safe, mean(diff) / safe
-
-    def kd_at(self, si, active):
-        return self.kd if self.kd_map is None else self.kd * self.kd_map.eval(si, active)
+        return spec, refr, diff, mean(spec) / safe, mean(refr) / safe, mean(diff) / safe, distr
 
     def frame(self, si):
         """The scattering frame, in Mitsuba's shading-frame coordinates, and the geometric normal.
 
-        Plain Mitsuba scatters about the interpolated normal, whatever the geometry says. With
-        pt_normals, pt's two rules for smooth meshes: where the viewer is behind the shading
-        normal's side of the geometric surface, scatter about the geometric normal; and a
-        direction whose side differs between the two normals carries nothing.
+        Plain Mitsuba scatters about the interpolated (or mapped) normal, whatever the geometry
+        says. With pt_normals, pt's two rules for smooth meshes, with a mapped normal as the
+        shading normal: where the viewer is behind the shading normal's side of the geometric
+        surface, scatter about the geometric normal; and a direction whose side differs between
+        the two normals carries nothing.
         """
         n = dr.select(dr.dot(si.n, si.sh_frame.n) < 0, -si.n, si.n)
         ng = si.to_local(n)
@@ -104,9 +144,8 @@ class LabBsdf(mi.BSDF):
     def consistent(self, w_local, w_frame_z, ng):
         return ~mi.Bool(self.pt_normals) | ((dr.dot(w_local, ng) > 0) == (w_frame_z > 0))
 
-    def glossy(self, wi, wo, eta_rel, spec, refr, p_spec, p_refr):
+    def glossy(self, d, wi, wo, eta_rel, spec, refr, p_spec, p_refr):
         """f cos and pdf of the rough lobes, on the viewer's side (wi.z > 0, wo flipped with it)."""
-        d = self.distr
         # Reflection: the half vector; Refr's share only where m totally reflects wi.
         h = dr.normalize(wi + wo)
         c_h = dr.dot(wi, h)
@@ -133,7 +172,7 @@ class LabBsdf(mi.BSDF):
         wi = frame.to_local(si.wi)
         side = dr.select(wi.z >= 0, 1.0, -1.0)
         cos_i = dr.abs(wi.z)
-        spec, refr, diff, p_spec, p_refr, p_diff = self.lobes(si, cos_i, active)
+        spec, refr, diff, p_spec, p_refr, p_diff, distr = self.lobes(si, cos_i, active)
         pick_spec = sample1 < p_spec
         pick_refr = ~pick_spec & (sample1 < p_spec + p_refr)
         pick_diff = ~pick_spec & ~pick_refr
@@ -144,7 +183,7 @@ class LabBsdf(mi.BSDF):
 
         if self.rough:
             wi_u = mi.Vector3f(wi.x, wi.y, cos_i)
-            m, _ = self.distr.sample(wi_u, sample2)
+            m, _ = distr.sample(wi_u, sample2)
             c = dr.dot(wi_u, m)
             sin2_t = (1 - c * c) / (eta_rel * eta_rel)
             tir = sin2_t >= 1
@@ -153,7 +192,7 @@ class LabBsdf(mi.BSDF):
             wo_u = dr.select(pick_spec | (pick_refr & tir), reflected,
                              dr.select(pick_refr, refracted, mi.Vector3f(diffuse.x, diffuse.y, dr.abs(diffuse.z))))
             wo = mi.Vector3f(wo_u.x, wo_u.y, side * wo_u.z)
-            f, pdf = self.mixture(si, wi_u, wo_u, eta_rel, spec, refr, diff, p_spec, p_refr, p_diff)
+            f, pdf = self.mixture(distr, wi_u, wo_u, eta_rel, spec, refr, diff, p_spec, p_refr, p_diff)
             bs.wo = frame.to_world(wo)
             bs.pdf = pdf
             transmitted = wo_u.z < 0
@@ -189,13 +228,13 @@ class LabBsdf(mi.BSDF):
         ok = active & (wi.z != 0) & (bs.pdf > 0) & ~(pick_diff & (diffuse.z == 0)) & self.consistent(bs.wo, wo.z, ng)
         return bs, dr.select(ok, value, 0.0)
 
-    def mixture(self, si, wi_u, wo_u, eta_rel, spec, refr, diff, p_spec, p_refr, p_diff):
+    def mixture(self, distr, wi_u, wo_u, eta_rel, spec, refr, diff, p_spec, p_refr, p_diff):
         """f cos and pdf of every non-delta lobe together, on the viewer's side."""
         lambert = wo_u.z > 0
         f = dr.select(lambert, diff * wo_u.z / math.pi, 0.0)
         pdf = dr.select(lambert, p_diff * wo_u.z / math.pi, 0.0)
         if self.rough:
-            fg, pg = self.glossy(wi_u, wo_u, eta_rel, spec, refr, p_spec, p_refr)
+            fg, pg = self.glossy(distr, wi_u, wo_u, eta_rel, spec, refr, p_spec, p_refr)
             f, pdf = f + fg, pdf + pg
         return f, pdf
 
@@ -204,11 +243,11 @@ class LabBsdf(mi.BSDF):
         wi, wo_f = frame.to_local(si.wi), frame.to_local(wo)
         side = dr.select(wi.z >= 0, 1.0, -1.0)
         cos_i = dr.abs(wi.z)
-        spec, refr, diff, p_spec, p_refr, p_diff = self.lobes(si, cos_i, active)
+        spec, refr, diff, p_spec, p_refr, p_diff, distr = self.lobes(si, cos_i, active)
         eta_rel = dr.select(wi.z >= 0, self.eta, 1.0 / self.eta)
         wi_u = mi.Vector3f(wi.x, wi.y, cos_i)
         wo_u = mi.Vector3f(wo_f.x, wo_f.y, side * wo_f.z)
-        f, pdf = self.mixture(si, wi_u, wo_u, eta_rel, spec, refr, diff, p_spec, p_refr, p_diff)
+        f, pdf = self.mixture(distr, wi_u, wo_u, eta_rel, spec, refr, diff, p_spec, p_refr, p_diff)
         usable = active & (wi.z != 0) & self.consistent(wo, wo_f.z, ng)
         return dr.select(usable, f, 0.0), dr.select(usable, pdf, 0.0)
 
@@ -225,6 +264,153 @@ class LabBsdf(mi.BSDF):
 mi.register_bsdf("lab", lambda props: LabBsdf(props))
 
 
+# ---------------------------------------------------------------- texture maps
+def read_image(path):
+    """The stored values of an image as floats (8-bit v/255, 16-bit v/65535, float as is; no colour
+    conversion, alpha not premultiplied), and the index of its alpha channel or None."""
+    config = oiio.ImageSpec()
+    config.attribute("oiio:UnassociatedAlpha", 1)
+    buf = oiio.ImageBuf(path, 0, 0, config)
+    if buf.has_error:
+        fail(f"{path}: {buf.geterror()}")
+    spec = buf.spec()
+    pixels = buf.get_pixels(oiio.FLOAT)
+    if pixels is None:
+        fail(f"{path}: cannot read its pixels")
+    pixels = np.asarray(pixels, dtype=np.float64).reshape(spec.height, spec.width, spec.nchannels)
+    alpha = spec.alpha_channel if spec.alpha_channel >= 0 else None
+    return pixels, alpha, spec.format.basetype in (oiio.FLOAT, oiio.HALF, oiio.DOUBLE)
+
+
+def colour_of(pixels, alpha):
+    """RGB of an image: grey replicated, alpha left out."""
+    colour = [c for c in range(pixels.shape[2]) if c != alpha]
+    if len(colour) == 1:
+        return np.repeat(pixels[:, :, colour[:1]], 3, axis=2)
+    if len(colour) < 3:
+        fail(f"an image with {pixels.shape[2]} channels is outside what this check models")
+    return pixels[:, :, colour[:3]]
+
+
+def data_channel(tex, default):
+    """The scalar a data map gives (-imfchan: r, g, b, m for alpha, l for luminance
+    0.2126 r + 0.7152 g + 0.0722 b, the value itself for a grey image), texel by texel."""
+    pixels, alpha, _ = read_image(tex["file"])
+    chan = tex["imfchan"] or default(alpha)
+    if chan == "m":
+        if alpha is None:
+            fail(f"{tex['where']}: -imfchan m on {tex['file']}, which has no alpha channel")
+        return pixels[:, :, alpha]
+    rgb = colour_of(pixels, alpha)
+    return rgb @ np.array([0.2126, 0.7152, 0.0722]) if chan == "l" else rgb[:, :, "rgb".index(chan)]
+
+
+def lookup(tex):
+    """Mitsuba's bitmap options for a map: bilinear, repeat or clamp, and the uv transform.
+
+    The meshes carry Mitsuba's uv (u, 1 - v) (write_ply); the lab looks up the image at
+    (u', v') = uv * s + o with v' = 0 at the bottom row, which in Mitsuba's image coordinates is
+    (su u + ou, 1 - (sv v + ov)) = (su u_m + ou, sv v_m + 1 - sv - ov)."""
+    (su, sv), (ou, ov) = tex["s"], tex["o"]
+    to_uv = mi.ScalarTransform3f().translate([ou, 1 - sv - ov]).scale([su, sv])  # scale, then translate
+    return {"type": "bitmap", "filter_type": "bilinear", "wrap_mode": "clamp" if tex["clamp"] else "repeat",
+            "to_uv": to_uv}
+
+
+def colour_map(tex):
+    """map_Kd / map_Ks: Mitsuba's own sRGB decoding of the file (8- and 16-bit files sRGB, float
+    files linear, grey replicated, alpha left out), in full float precision. It must agree with
+    the lab's rule, decoded here from the file's stored values; else the check stops."""
+    pixels, alpha, is_float = read_image(tex["file"])
+    rgb = colour_of(pixels, alpha)
+    if not is_float:
+        rgb = np.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
+    decoded = np.array(mi.Bitmap(tex["file"]).convert(mi.Bitmap.PixelFormat.RGB, mi.Struct.Type.Float32, False))
+    if decoded.shape != rgb.shape or np.max(np.abs(decoded - rgb)) > 1e-5:
+        fail(f"{tex['where']}: Mitsuba decodes {tex['file']} differently from the lab's rule")
+    return {**lookup(tex), "filename": tex["file"], "raw": False, "format": "variant"}
+
+
+def data_map(values):
+    """A float bitmap of data values (raw: Mitsuba leaves them as they are), shape (h, w, c)."""
+    return {"type": "bitmap", "bitmap": mi.Bitmap(np.ascontiguousarray(values, dtype=np.float32)), "raw": True}
+
+
+def triangle_frames(pos, uv):
+    """Per triangle: geometric normal, dp/du and dp/dv of the OBJ uvs (v up), and the uv area."""
+    p = np.asarray(pos, dtype=np.float64).reshape(-1, 3, 3)
+    t = np.asarray(uv, dtype=np.float64).reshape(-1, 3, 2)
+    e1, e2 = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
+    d1, d2 = t[:, 1] - t[:, 0], t[:, 2] - t[:, 0]
+    det = d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]
+    safe = np.where(det == 0, 1.0, det)[:, None]
+    dpdu = (d2[:, 1:2] * e1 - d1[:, 1:2] * e2) / safe
+    dpdv = (d1[:, 0:1] * e2 - d2[:, 0:1] * e1) / safe
+    ng = np.cross(e1, e2)
+    ng /= np.linalg.norm(ng, axis=1, keepdims=True)
+    return ng, dpdu, dpdv, det
+
+
+def build_material(name, m, pt_normals, pos, nrm, uv):
+    """The Mitsuba BSDF of one lab material: the lab BSDF with its maps, inside normalmap or
+    bumpmap (norm, bump), inside mask (map_d).
+
+    What Mitsuba cannot express as issue 11 has it, and what is done about it:
+    - map_Pr with texels at or below alpha 0.001 would mix smooth and rough lobes per hit: stops.
+    - Mitsuba's normalmap takes x along dp/du (projected) and y along cross(N, x); issue 11's
+      bitangent is sign * cross(N, T). They agree where the uv layout is not mirrored; a
+      mirrored triangle stops the check. Both maps need flat shading here (each corner normal the
+      face normal), where the tangent frame of issue 11 and Mitsuba's agree; else the check stops.
+    - Mitsuba's bumpmap turns the bumped normal to the geometric normal's side, issue 11 to the
+      shading normal's: the same on the flat faces allowed here.
+    """
+    maps = m["maps"]
+    bsdf = {"type": "lab", "w": m["w"], "t": m["t"], "eta": m["eta"], "alpha": m["alpha"],
+            "pm": -1.0 if m["pm"] is None else m["pm"], "pt_normals": pt_normals}
+    for c, kd, ks, r0 in zip("rgb", m["kd"], m["ks"], m["r0"]):
+        bsdf[f"kd_{c}"], bsdf[f"ks_{c}"], bsdf[f"r0_{c}"] = kd, ks, r0
+    for kind in ("kd", "ks"):
+        if kind in maps:
+            bsdf[f"{kind}_map"] = colour_map(maps[kind])
+    luminance = lambda alpha: "l"
+    if "pr" in maps:
+        value = data_channel(maps["pr"], luminance)
+        if value.min() ** 2 <= 0.001:
+            fail(f"{maps['pr']['where']}: map_Pr reaches alpha <= 0.001 (smooth lobes) on some texels; "
+                 "a mix of smooth and rough lobes per hit is outside what this check models")
+        bsdf["pr_map"] = {**lookup(maps["pr"]), **data_map(value[:, :, None])}
+    if "pm" in maps:
+        bsdf["pm_map"] = {**lookup(maps["pm"]), **data_map(data_channel(maps["pm"], luminance)[:, :, None])}
+    if "norm" in maps or "bump" in maps:
+        ng, dpdu, dpdv, det = triangle_frames(pos, uv)
+        corners = np.asarray(nrm, dtype=np.float64).reshape(-1, 3, 3)
+        corners /= np.linalg.norm(corners, axis=2, keepdims=True)
+        if np.any(np.abs(corners - ng[:, None, :]).max(axis=(1, 2)) > 1e-4):
+            fail(f"material {name!r}: norm or bump on faces whose corner normals are not the face normal "
+                 "(smooth shading) is outside what this check models")
+        if np.any(det == 0):
+            fail(f"material {name!r}: norm or bump on a face without a uv layout (zero uv area)")
+        if "norm" in maps and np.any(np.einsum("ij,ij->i", np.cross(ng, dpdu), dpdv) < 0):
+            fail(f"material {name!r}: a normal map on a mirrored uv layout (bitangent sign -1) is outside "
+                 "what Mitsuba's normalmap expresses")
+    off = {"flip_invalid_normals": False, "use_shadowing_function": False}  # Mitsuba's, not issue 11's
+    if "norm" in maps:
+        tex = maps["norm"]
+        pixels, alpha, _ = read_image(tex["file"])
+        n = colour_of(pixels, alpha) * 2 - 1  # -bm scales x and y; Mitsuba normalizes
+        n[:, :, :2] *= tex["bm"]
+        bsdf = {"type": "normalmap", "normalmap": {**lookup(tex), **data_map((n + 1) / 2)}, "bsdf": bsdf, **off}
+    elif "bump" in maps:
+        tex = maps["bump"]
+        bsdf = {"type": "bumpmap", "height": {**lookup(tex), **data_map(data_channel(tex, luminance)[:, :, None])},
+                "scale": tex["bm"], "bsdf": bsdf, **off}
+    if "d" in maps:
+        tex = maps["d"]
+        coverage = m["coverage"] * data_channel(tex, lambda alpha: "l" if alpha is None else "m")
+        bsdf = {"type": "mask", "opacity": {**lookup(tex), **data_map(coverage[:, :, None])}, "bsdf": bsdf}
+    return bsdf
+
+
 # ---------------------------------------------------------------- scene dict
 def build_scene(obj_path, camera_index, width, height, max_depth, pt_normals, tmp, rr_depth=5):
     mtllib, groups = parse_obj(obj_path)
@@ -235,7 +421,12 @@ def build_scene(obj_path, camera_index, width, height, max_depth, pt_normals, tm
     scene = {
         "type": "scene",
         # pt's --max-depth D counts scattering events; Mitsuba's max_depth counts path vertices.
-        "integrator": {"type": "path", "max_depth": max_depth + 1, "rr_depth": rr_depth},
+        # With map_d, volpath: its shadow rays pass through `mask` surfaces with transmittance
+        # 1 - alpha and a pass-through is no bounce, as in issue 11. (path's shadow rays stop at
+        # any surface, so light through a cutout would come from BSDF sampling alone: unbiased,
+        # but very noisy.) Without media volpath is otherwise the same path tracer.
+        "integrator": {"type": "volpath" if any("d" in m["maps"] for m in materials.values()) else "path",
+                       "max_depth": max_depth + 1, "rr_depth": rr_depth},
         "sensor": {
             "type": "perspective",
             "fov": cam["fov"], "fov_axis": "y",
@@ -268,12 +459,7 @@ def build_scene(obj_path, camera_index, width, height, max_depth, pt_normals, tm
         m = materials.get(name) or fail(f"usemtl {name!r} names no material")
         ply = os.path.join(tmp, f"group{k}.ply")
         write_ply(ply, pos, nrm, uv)
-        bsdf = {"type": "lab", "w": m["w"], "t": m["t"], "eta": m["eta"], "alpha": m["alpha"], "pt_normals": pt_normals}
-        if m["map_kd"]:  # an sRGB texture, bilinear, repeating
-            bsdf["kd_map"] = {"type": "bitmap", "filename": m["map_kd"], "raw": False,
-                              "filter_type": "bilinear", "wrap_mode": "repeat"}
-        for c, kd, ks, r0 in zip("rgb", m["kd"], m["ks"], m["r0"]):
-            bsdf[f"kd_{c}"], bsdf[f"ks_{c}"], bsdf[f"r0_{c}"] = kd, ks, r0
+        bsdf = build_material(name, m, pt_normals, pos, nrm, uv)
         scene[f"shape{k}"] = {"type": "ply", "filename": ply, "face_normals": False, "bsdf": bsdf}
     return mi.load_dict(scene)
 
