@@ -96,15 +96,13 @@ Accel::Accel(const Scene& scene, int threads, const AccelOptions& options) : imp
     rtcSetSceneBuildQuality(impl_->scene, quality);
 
     // Which triangles have a cutout: they go into a geometry of their own.
-    std::vector<uint32_t> opaque;
     impl_->cutouts.scene = &scene;
     bool anyCutout = false;
     for (const Material& m : scene.materials) anyCutout |= m.hasCutout();
-    if (anyCutout) {
+    if (anyCutout)
         for (size_t t = 0; t < scene.triangleCount(); ++t)
-            (scene.materials[scene.triMaterial[t]].hasCutout() ? impl_->cutouts.triangle : opaque).push_back(uint32_t(t));
-        impl_->opaqueTriangle = opaque;
-    }
+            (scene.materials[scene.triMaterial[t]].hasCutout() ? impl_->cutouts.triangle : impl_->opaqueTriangle)
+                .push_back(uint32_t(t));
     auto addGeometry = [&](const std::vector<uint32_t>* subset, unsigned id) {
         size_t count = subset ? subset->size() : scene.triangleCount();
         if (count == 0) return;
@@ -129,7 +127,7 @@ Accel::Accel(const Scene& scene, int threads, const AccelOptions& options) : imp
         rtcReleaseGeometry(geom);
     };
     if (anyCutout) {
-        addGeometry(&opaque, kOpaqueGeometry);
+        addGeometry(&impl_->opaqueTriangle, kOpaqueGeometry);
         addGeometry(&impl_->cutouts.triangle, kCutoutGeometry);
     } else {
         addGeometry(nullptr, kOpaqueGeometry);

@@ -43,6 +43,17 @@ inline Vec3 safeNormalize(const Vec3& v) {
     return s * (1.0f / glm::length(s));
 }
 
+// dp/du and dp/dv of a triangle whose edges e1, e2 change uv by s1, s2. Returns twice the signed
+// uv area (its sign is the handedness of the uv layout); where the layout is degenerate (an area
+// of 0, or too small to divide by) it returns 0 and leaves dpdu and dpdv as they are.
+inline float uvDerivatives(const Vec3& e1, const Vec3& e2, Vec2 s1, Vec2 s2, Vec3& dpdu, Vec3& dpdv) {
+    float det = s1.x * s2.y - s1.y * s2.x;
+    if (det == 0.0f || !std::isfinite(1.0f / det)) return 0.0f;
+    dpdu = (s2.y * e1 - s1.y * e2) / det;
+    dpdv = (s1.x * e2 - s2.x * e1) / det;
+    return det;
+}
+
 // Orthonormal basis around a unit vector n (Duff et al. 2017, "Building an Orthonormal Basis,
 // Revisited"): branchless and exact for every n, including n = (0, 0, -1).
 struct Frame {

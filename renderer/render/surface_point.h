@@ -60,11 +60,7 @@ inline void addTextureCoordinates(SurfacePoint& sp, const ShadingTriangle& tri, 
     const float b0 = 1.0f - hit.u - hit.v;
     sp.uv = uv0 + hit.u * s1 + hit.v * s2;
 
-    float det = s1.x * s2.y - s1.y * s2.x;
-    if (det != 0.0f && std::isfinite(1.0f / det)) {
-        sp.dpdu = (s2.y * tri.e1 - s1.y * tri.e2) / det;
-        sp.dpdv = (s1.x * tri.e2 - s2.x * tri.e1) / det;
-    }
+    uvDerivatives(tri.e1, tri.e2, s1, s2, sp.dpdu, sp.dpdv);
     if (!tangents.empty()) {
         const CornerTangent* c = &tangents[3 * size_t(hit.prim)];
         sp.tangent = b0 * c[0].tangent + hit.u * c[1].tangent + hit.v * c[2].tangent;

@@ -47,9 +47,9 @@ std::vector<CornerTangent> buildCornerTangents(const Scene& scene) {
         Vec2 uv[3] = {scene.uvs[ti[0]], scene.uvs[ti[1]], scene.uvs[ti[2]]};
         Vec3 d1 = p[1] - p[0], d2 = p[2] - p[0];
         Vec2 s1 = uv[1] - uv[0], s2 = uv[2] - uv[0];
-        float area2 = s1.x * s2.y - s1.y * s2.x; // twice the signed uv area: its sign is the handedness
-        if (area2 == 0.0f || !std::isfinite(area2)) continue;
-        Vec3 dpdu = (s2.y * d1 - s1.y * d2) / area2;
+        Vec3 dpdu, dpdv;
+        float area2 = uvDerivatives(d1, d2, s1, s2, dpdu, dpdv); // its sign is the handedness
+        if (area2 == 0.0f) continue;
         bool positive = area2 > 0.0f;
         Vec3 ng = safeNormalize(glm::cross(d1, d2));
         bool hasNormals = !scene.triNormals.empty() && scene.triNormals[t].x >= 0;

@@ -186,7 +186,7 @@ TextureMap MtlParser::loadTexture(std::string_view spec, std::string_view keywor
     TextureCache& cache = *scene.textures;
     auto fallBack = [&](const std::string& why) {
         warnings.once("texture:" + full + (colour ? ":colour" : ":data"),
-                      where + kw + ": " + why + "; " + (kind == MapKind::Colour ? "using the plain colour" : "using the plain value") +
+                      where + kw + ": " + why + "; " + (colour ? "using the plain colour" : "using the plain value") +
                           " instead (reported once per file)");
         return TextureMap{};
     };
@@ -308,37 +308,30 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
 
     // Materials.
     Material& m = material.m;
+    // Map lines: the rest of the line is options and a file name.
+    struct MapKeyword {
+        const char *name, *alias;
+        TextureMap Material::*map;
+        MapKind kind;
+    };
+    static const MapKeyword mapKeywords[] = {
+        {"map_Kd", "diffuseReflectanceMap", &Material::kdMap, MapKind::Colour},
+        {"map_Ks", "specularReflectanceMap", &Material::ksMap, MapKind::Colour},
+        {"map_Pr", nullptr, &Material::roughnessMap, MapKind::Scalar},
+        {"map_Pm", nullptr, &Material::metallicMap, MapKind::Scalar},
+        {"norm", nullptr, &Material::normalMap, MapKind::Normal},
+        {"bump", "map_bump", &Material::bumpMap, MapKind::Bump},
+        {"map_d", nullptr, &Material::alphaMap, MapKind::Alpha}};
+    for (const MapKeyword& k : mapKeywords)
+        if (is(k.name) || (k.alias && is(k.alias))) {
+            requireBlock(Block::Material, keyword, t);
+            m.*k.map = loadTexture(t.restOfLine(), keyword, lines, k.kind);
+            return;
+        }
+
     if (is("Kd") || is("diffuseReflectance")) {
         requireBlock(Block::Material, keyword, t);
         m.kd = reflectance(t, keyword);
-    } else if (is("map_Kd") || is("diffuseReflectanceMap")) {
-        requireBlock(Block::Material, keyword, t);
-        m.kdMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Colour);
-        return;
-    } else if (is("map_Ks") || is("specularReflectanceMap")) {
-        requireBlock(Block::Material, keyword, t);
-        m.ksMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Colour);
-        return;
-    } else if (is("map_Pr")) {
-        requireBlock(Block::Material, keyword, t);
-        m.roughnessMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Scalar);
-        return;
-    } else if (is("map_Pm")) {
-        requireBlock(Block::Material, keyword, t);
-        m.metallicMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Scalar);
-        return;
-    } else if (is("norm")) {
-        requireBlock(Block::Material, keyword, t);
-        m.normalMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Normal);
-        return;
-    } else if (is("bump") || is("map_bump")) {
-        requireBlock(Block::Material, keyword, t);
-        m.bumpMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Bump);
-        return;
-    } else if (is("map_d")) {
-        requireBlock(Block::Material, keyword, t);
-        m.alphaMap = loadTexture(t.restOfLine(), keyword, lines, MapKind::Alpha);
-        return;
     } else if (is("Ks") || is("specularReflectance")) {
         requireBlock(Block::Material, keyword, t);
         m.ks = reflectance(t, keyword);
