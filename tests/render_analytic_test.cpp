@@ -2,11 +2,12 @@
 // cosine or pi, a wrong pdf, a double-counted light, a self-intersecting ray.
 #include "tests/test_scenes.h"
 
-#include "image/compare.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
+
+#include <sstream>
 
 namespace pt::test {
 namespace {
@@ -222,12 +223,9 @@ TEST(Invariance, ScaleAndTranslation) {
         };
         for (Case c : {Case{1e-3f, Vec3(0)}, Case{1e4f, Vec3(0)}, Case{1.0f, Vec3(1e4f, -1e4f, 1e4f)}}) {
             Rendered moved = render(transformed(base, c.scale, c.translate), 64, 64, 256, RenderSettings{.seed = 5});
-            CompareOptions options;
-            options.blockSize = 8;
-            CompareReport report = compareImages(toImage(moved), toImage(reference), options);
-            EXPECT_TRUE(report.pass) << file << " scale " << c.scale << " translate " << c.translate.x << ": "
-                                     << report.failedTests << " tests differ; worst z " << report.worst[0].z
-                                     << " at " << report.worst[0].x0 << "," << report.worst[0].y0;
+            std::ostringstream what;
+            what << file << " scale " << c.scale << " translate " << c.translate.x;
+            expectSameImage(moved, reference, what.str());
         }
     }
 }
@@ -267,11 +265,9 @@ TEST(Invariance, AtTheLimitsOfTheAcceptedRange) {
             ASSERT_NO_THROW(completeScene(scaled, none)) << file << " at scale " << scale << " is refused";
             Rendered r = render(scaled, 64, 64, 256, RenderSettings{.seed = 5});
             EXPECT_GT(r.rays.shadow, 0u);
-            CompareOptions options;
-            options.blockSize = 8;
-            CompareReport report = compareImages(toImage(r), toImage(reference), options);
-            EXPECT_TRUE(report.pass) << file << " scale " << scale << ": " << report.failedTests
-                                     << " tests differ; worst z " << report.worst[0].z;
+            std::ostringstream what;
+            what << file << " scale " << scale;
+            expectSameImage(r, reference, what.str());
         }
     }
 }
@@ -300,11 +296,7 @@ TEST(RoughLobes, ConvergeToTheSmoothOnes) {
     for (Material& m : rough.materials) m.roughness = 0.0011f;
     Rendered a = render(smooth, 64, 64, 256), b = render(rough, 64, 64, 256, RenderSettings{.seed = 3});
     EXPECT_GT(b.rays.shadow, 0u);
-    CompareOptions options;
-    options.blockSize = 8;
-    CompareReport report = compareImages(toImage(b), toImage(a), options);
-    EXPECT_TRUE(report.pass) << report.failedTests << " tests differ; worst z " << report.worst[0].z << " at "
-                             << report.worst[0].x0 << "," << report.worst[0].y0;
+    expectSameImage(b, a, "alpha 0.0011 against the smooth lobes");
 }
 
 } // namespace
@@ -343,11 +335,7 @@ void expectSameAsMis(const Scene& scene, LightSampling mode, uint32_t spp, const
     s.lightSampling = mode;
     s.seed = 17;
     Rendered r = render(scene, 48, 48, spp, s);
-    CompareOptions options;
-    options.blockSize = 8;
-    CompareReport report = compareImages(toImage(r), toImage(reference), options);
-    EXPECT_TRUE(report.pass) << what << ": " << report.failedTests << " tests differ; worst z " << report.worst[0].z
-                             << " at " << report.worst[0].x0 << "," << report.worst[0].y0;
+    expectSameImage(r, reference, what);
 }
 
 TEST(RoughLobes, LightSamplingAgreesWithMis) {

@@ -1,6 +1,7 @@
 #include "tests/test_scenes.h"
 
 #include "accel/accel.h"
+#include "image/compare.h"
 
 #include <gtest/gtest.h>
 
@@ -132,6 +133,42 @@ void expectNear(const RegionStats& s, const Spectrum& expected, float sigmas, fl
         EXPECT_NEAR(s.mean[c], expected[c], tol)
             << what << ", channel " << c << ": standard error " << s.stdError[c];
     }
+}
+
+void expectSameImage(const Rendered& test, const Rendered& reference, const std::string& what) {
+    CompareOptions options;
+    options.blockSize = 8;
+    CompareReport report = compareImages(toImage(test), toImage(reference), options);
+    EXPECT_TRUE(report.pass) << what << ": " << report.failedTests << " tests differ; worst z " << report.worst[0].z
+                             << " at " << report.worst[0].x0 << "," << report.worst[0].y0;
+}
+
+TextureMap mapOf(int texture, TextureChannel channel) {
+    TextureMap m;
+    m.texture = texture;
+    m.channel = channel;
+    return m;
+}
+
+Texture checkerTexture() {
+    Texture t;
+    t.width = t.height = 64;
+    t.channels = 3;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x)
+            for (int c = 0; c < 3; ++c) t.texels.push_back(float(((x / 8) + (y / 8)) % 2));
+    return t;
+}
+
+Texture rampTexture(int width, int height) {
+    Texture t;
+    t.colour = false;
+    t.width = width;
+    t.height = height;
+    t.channels = 1;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) t.texels.push_back((x + 0.5f) / float(width));
+    return t;
 }
 
 } // namespace pt::test

@@ -5,6 +5,7 @@
 #include "render/renderer.h"
 #include "scene/scene.h"
 
+#include <string>
 #include <vector>
 
 namespace pt::test {
@@ -46,6 +47,15 @@ RegionStats regionStats(const Rendered& r, int x0, int y0, int x1, int y1);
 
 // The render as an image with its variance layer, for compareImages (image/compare.h).
 Image toImage(const Rendered& r);
+
+// Asserts that `test` and `reference` agree within noise, block by block (image/compare.h).
+void expectSameImage(const Rendered& test, const Rendered& reference, const std::string& what);
+
+// Textures for tests: a map of one, a 64 x 64 black-and-white checker of 8 x 8 squares (RGB), a
+// data ramp rising from 0 to 1 across u in `width` texels (one channel).
+TextureMap mapOf(int texture, TextureChannel channel = TextureChannel::Rgb);
+Texture checkerTexture();
+Texture rampTexture(int width, int height);
 
 // Asserts |measured - expected| <= sigmas * stdError + relTol * expected in every channel.
 void expectNear(const RegionStats& s, const Spectrum& expected, float sigmas, float relTol, const char* what);

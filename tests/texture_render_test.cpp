@@ -2,8 +2,6 @@
 // for, and cutouts in camera and shadow rays.
 #include "tests/test_scenes.h"
 
-#include "image/compare.h"
-
 #include <gtest/gtest.h>
 
 namespace pt::test {
@@ -50,21 +48,6 @@ int constantTexture(Scene& scene, std::vector<float> value, bool colour) {
     return scene.textures->add(std::move(t));
 }
 
-TextureMap mapOf(int texture, TextureChannel channel = TextureChannel::Rgb) {
-    TextureMap m;
-    m.texture = texture;
-    m.channel = channel;
-    return m;
-}
-
-void expectSameImage(const Rendered& test, const Rendered& reference, const char* what) {
-    CompareOptions options;
-    options.blockSize = 8;
-    CompareReport report = compareImages(toImage(test), toImage(reference), options);
-    EXPECT_TRUE(report.pass) << what << ": " << report.failedTests << " tests differ; worst z " << report.worst[0].z
-                             << " at " << report.worst[0].x0 << "," << report.worst[0].y0;
-}
-
 // A black-and-white checker (Kd 0.8) on a plane to the horizon under a white sky: every pixel
 // converges to the pixel's average of the checker. Far away each pixel covers many squares;
 // filtered lookups give every sample nearly that average, so 16 samples show neither moire nor
@@ -72,15 +55,9 @@ void expectSameImage(const Rendered& test, const Rendered& reference, const char
 TEST(TextureRender, CheckerToTheHorizonWithoutMoire) {
     Scene scene = emptyScene(lookAt({0, 1, 0}, {0, 1 - 10 * std::tan(glm::radians(16.0f)), -10}, {0, 1, 0}, 30));
     scene.environment.sky = Spectrum(1.0f);
-    Texture checker;
-    checker.width = checker.height = 64;
-    checker.channels = 3;
-    for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x)
-            for (int c = 0; c < 3; ++c) checker.texels.push_back(float(((x / 8) + (y / 8)) % 2));
     Material m;
     m.kd = Spectrum(0.8f);
-    m.kdMap = mapOf(scene.textures->add(std::move(checker)));
+    m.kdMap = mapOf(scene.textures->add(checkerTexture()));
     addUvQuad(scene, {-1000, 0, 1000}, {1000, 0, 1000}, {1000, 0, -1000}, {-1000, 0, -1000}, addMaterial(scene, m),
               Vec2(0.0f), Vec2(1000.0f)); // the texture repeats every 2 units: squares of 0.25
     RenderSettings s;
@@ -163,17 +140,10 @@ TEST(TextureRender, TiltedNormalMapIsTiltedNormal) {
 // with uv from 0.1 to 0.9 over 2 units in x, du/dx = 0.4, and bm = 1.5 gives a slope of 0.6.
 TEST(TextureRender, BumpRampIsTiltedNormal) {
     Scene mapped = litPlane();
-    Texture ramp;
-    ramp.colour = false;
-    ramp.width = 64;
-    ramp.height = 2;
-    ramp.channels = 1;
-    for (int y = 0; y < ramp.height; ++y)
-        for (int x = 0; x < ramp.width; ++x) ramp.texels.push_back((x + 0.5f) / float(ramp.width));
     Material m;
     m.kd = Spectrum(0.6f);
     Material plain = m;
-    m.bumpMap = mapOf(mapped.textures->add(std::move(ramp)), TextureChannel::R);
+    m.bumpMap = mapOf(mapped.textures->add(rampTexture(64, 2)), TextureChannel::R);
     m.bumpMap.bumpScale = 1.5f;
     m.bumpMap.clamp = true;
     addPlane(mapped, m, Vec3(0.0f), Vec2(0.1f), Vec2(0.9f));

@@ -3,6 +3,7 @@
 #include "scene/mtl_loader.h"
 #include "texture/texture_cache.h"
 #include "texture/texture_io.h"
+#include "tests/test_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -24,12 +25,6 @@ Texture twoTexels(Spectrum first, Spectrum second, bool vertical) {
     return t;
 }
 
-TextureMap mapOf(int texture) {
-    TextureMap m;
-    m.texture = texture;
-    return m;
-}
-
 void expectColor(Spectrum got, Spectrum want, const char* what, float tolerance = 1e-5f) {
     EXPECT_NEAR(got.x, want.x, tolerance) << what;
     EXPECT_NEAR(got.y, want.y, tolerance) << what;
@@ -40,7 +35,7 @@ const Footprint kPoint; // a bilinear lookup in the finest level
 
 TEST(Texture, VRunsUpFromTheBottomRow) {
     TextureCache cache;
-    TextureMap m = mapOf(cache.add(twoTexels(kGreen, kWhite, true))); // green on top, white at the bottom
+    TextureMap m = test::mapOf(cache.add(twoTexels(kGreen, kWhite, true))); // green on top, white at the bottom
     m.clamp = true;
     expectColor(cache.color(m, Vec2(0.5f, 0.25f), kPoint), kWhite, "v 0.25 is the bottom texel");
     expectColor(cache.color(m, Vec2(0.5f, 0.75f), kPoint), kGreen, "v 0.75 is the top texel");
@@ -49,7 +44,7 @@ TEST(Texture, VRunsUpFromTheBottomRow) {
 
 TEST(Texture, RepeatAndClamp) {
     TextureCache cache;
-    TextureMap repeat = mapOf(cache.add(twoTexels(kRed, kBlue, false)));
+    TextureMap repeat = test::mapOf(cache.add(twoTexels(kRed, kBlue, false)));
     TextureMap clamp = repeat;
     clamp.clamp = true;
     expectColor(cache.color(repeat, Vec2(1.25f, 0.5f), kPoint), kRed, "repeat: u 1.25 is u 0.25");
@@ -62,7 +57,7 @@ TEST(Texture, RepeatAndClamp) {
 
 TEST(Texture, ScaleAndOffset) {
     TextureCache cache;
-    TextureMap m = mapOf(cache.add(twoTexels(kRed, kBlue, false)));
+    TextureMap m = test::mapOf(cache.add(twoTexels(kRed, kBlue, false)));
     m.offset = Vec2(0.5f, 0.0f);
     expectColor(cache.color(m, Vec2(0.25f, 0.5f), kPoint), kBlue, "-o 0.5 moves u 0.25 to 0.75");
     m.offset = Vec2(0.0f);
@@ -75,13 +70,7 @@ TEST(Texture, ScaleAndOffset) {
 // texture) it must average to the mean of the light, 0.5, not to the mean of the encoded values.
 TEST(Texture, MinificationAveragesLinearValues) {
     TextureCache cache;
-    Texture t;
-    t.width = t.height = 64;
-    t.channels = 3;
-    for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x)
-            for (int c = 0; c < 3; ++c) t.texels.push_back(float(((x / 8) + (y / 8)) % 2));
-    TextureMap m = mapOf(cache.add(std::move(t)));
+    TextureMap m = test::mapOf(cache.add(test::checkerTexture()));
     Footprint whole{Vec2(1.0f, 0.0f), Vec2(0.0f, 1.0f)};
     expectColor(cache.color(m, Vec2(0.3f, 0.7f), whole), Spectrum(0.5f), "the coarsest level", 0.02f);
     // A footprint two squares wide, stretched 8:1, is still filtered (anisotropically) to the mean.
@@ -100,7 +89,7 @@ TEST(Texture, ScalarChannels) {
     t.width = t.height = 1;
     t.channels = 4;
     t.texels = {0.1f, 0.2f, 0.4f, 0.8f};
-    TextureMap m = mapOf(cache.add(std::move(t)));
+    TextureMap m = test::mapOf(cache.add(std::move(t)));
     const std::pair<TextureChannel, float> want[] = {{TextureChannel::R, 0.1f},
                                                      {TextureChannel::G, 0.2f},
                                                      {TextureChannel::B, 0.4f},
@@ -116,15 +105,7 @@ TEST(Texture, ScalarChannels) {
 // (and 2 with -s 2), and 0 in v.
 TEST(Texture, DerivativesOfARamp) {
     TextureCache cache;
-    Texture t;
-    t.colour = false;
-    t.width = 32;
-    t.height = 4;
-    t.channels = 1;
-    for (int y = 0; y < t.height; ++y)
-        for (int x = 0; x < t.width; ++x) t.texels.push_back((x + 0.5f) / float(t.width));
-    TextureMap m = mapOf(cache.add(std::move(t)));
-    m.channel = TextureChannel::R;
+    TextureMap m = test::mapOf(cache.add(test::rampTexture(32, 4)), TextureChannel::R);
     m.clamp = true;
     Vec2 d;
     float h = cache.scalar(m, Vec2(0.4f, 0.5f), kPoint, d);
@@ -157,6 +138,9 @@ TEST(Texture, SrgbAgainstLinear) {
     }
 }
 
+// Each MTL line, in a material block, is an error whose message contains the given text.
+void expectErrors(const std::string& dir, const std::vector<std::pair<std::string, std::string>>& cases);
+
 struct Parsed {
     Scene scene;
     std::unordered_map<std::string, uint32_t> index;
@@ -187,13 +171,18 @@ TEST(Texture, MapOptionsAndNamesWithSpaces) {
     Parsed one = parse("newmtl A\nmap_Kd -s 4 my checker.png\n", dir.string());
     EXPECT_EQ(one.scene.materials.at(0).kdMap.scale, Vec2(4.0f, 1.0f)); // v keeps its default
 
-    for (const auto& [line, message] : std::vector<std::pair<std::string, std::string>>{
-             {"map_Kd -clamp maybe my checker.png", "test.mtl:2: map_Kd -clamp: expected on or off, found \"maybe\""},
-             {"map_Kd -zz my checker.png", "test.mtl:2: map_Kd: unknown texture option \"-zz\""},
-             {"map_Kd -s my checker.png", "test.mtl:2: map_Kd -s: expected a number"},
-             {"map_Kd -o 1 2", "test.mtl:2: map_Kd: expected a file name"}}) {
+    expectErrors(dir.string(), {
+                   {"map_Kd -clamp maybe my checker.png", "test.mtl:2: map_Kd -clamp: expected on or off, found \"maybe\""},
+                   {"map_Kd -zz my checker.png", "test.mtl:2: map_Kd: unknown texture option \"-zz\""},
+                   {"map_Kd -s my checker.png", "test.mtl:2: map_Kd -s: expected a number"},
+                   {"map_Kd -o 1 2", "test.mtl:2: map_Kd: expected a file name"},
+                 });
+}
+
+void expectErrors(const std::string& dir, const std::vector<std::pair<std::string, std::string>>& cases) {
+    for (const auto& [line, message] : cases) {
         try {
-            parse("newmtl A\n" + line + "\n", dir.string());
+            parse("newmtl A\n" + line + "\n", dir);
             ADD_FAILURE() << line << ": no error";
         } catch (const LoadError& e) {
             EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << line << ": " << e.what();
@@ -257,18 +246,12 @@ TEST(Texture, DataMapKeywordsAndOptions) {
     EXPECT_FALSE(both.scene.materials[0].bumpMap.used());
     EXPECT_NE(messages(both.warnings).find("the bump map is ignored"), std::string::npos);
 
-    for (const auto& [line, message] : std::vector<std::pair<std::string, std::string>>{
-             {"map_Pr -imfchan z grey.png", "test.mtl:2: map_Pr -imfchan: expected r, g, b, m (alpha) or l (luminance), found \"z\" (depth"},
-             {"bump -imfchan grey.png", "test.mtl:2: bump -imfchan: expected r, g, b"},
-             {"bump -bm grey.png", "test.mtl:2: bump -bm: expected a number"},
-             {"bump -bm 1e30 grey.png", "test.mtl:2: bump -bm: 1e+30 is beyond 1e12"}}) {
-        try {
-            parse("newmtl A\n" + line + "\n", dir.string());
-            ADD_FAILURE() << line << ": no error";
-        } catch (const LoadError& e) {
-            EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << line << ": " << e.what();
-        }
-    }
+    expectErrors(dir.string(), {
+                   {"map_Pr -imfchan z grey.png", "test.mtl:2: map_Pr -imfchan: expected r, g, b, m (alpha) or l (luminance), found \"z\" (depth"},
+                   {"bump -imfchan grey.png", "test.mtl:2: bump -imfchan: expected r, g, b"},
+                   {"bump -bm grey.png", "test.mtl:2: bump -bm: expected a number"},
+                   {"bump -bm 1e30 grey.png", "test.mtl:2: bump -bm: 1e+30 is beyond 1e12"},
+                 });
 }
 
 } // namespace
