@@ -56,6 +56,11 @@ options (default in brackets):
                            albedo    first-hit reflectance, all lobes (albedo.R/G/B)
                            normal    first-hit shading normal facing the camera (normal.X/Y/Z)
                            depth     distance to the first hit, +inf where none (depth.Z)
+  --env PATH             light the scene with an HDR lat-long environment map (EXR, HDR,
+                         float TIFF; +y up, laid out as in Blender), importance-sampled
+                         as a light; without it the lab's two-tone sky [none]
+  --env-rotate DEG       turn the map about +y by DEG degrees [0]
+  --env-scale S          multiply the map's radiance by S [1]
   --clamp X              scale down any sample whose largest channel exceeds X: fewer
                          fireflies, but biased (light is lost); 0 is off [0]
   -q, --quiet            print neither warnings nor progress (nor the libraries' own lines),
@@ -84,6 +89,9 @@ struct RenderArgs {
     bool aovVariance = false;
     bool aovAlbedo = false, aovNormal = false, aovDepth = false;
     bool quiet = false;
+    std::string env;
+    double envRotate = 0.0, envScale = 1.0;
+    bool envRotateGiven = false, envScaleGiven = false;
 };
 
 void parseResolution(const std::string& v, int& w, int& h) {
@@ -152,6 +160,14 @@ RenderArgs parseArgs(int argc, char** argv) {
             }
         } else if (opt == "clamp") {
             r.settings.clamp = float(args.number(opt, 0.0, 1e30));
+        } else if (opt == "env") {
+            r.env = args.value(opt);
+        } else if (opt == "env-rotate") {
+            r.envRotate = args.number(opt, -36000.0, 36000.0);
+            r.envRotateGiven = true;
+        } else if (opt == "env-scale") {
+            r.envScale = args.number(opt, 0.0, 1e30);
+            r.envScaleGiven = true;
         } else if (opt == "q" || opt == "quiet") {
             r.quiet = true;
         } else {
@@ -161,6 +177,8 @@ RenderArgs parseArgs(int argc, char** argv) {
     if (positional.empty()) throw UsageError("missing the SCENE argument");
     if (positional.size() > 1) throw UsageError("unexpected argument \"" + positional[1] + "\"; expected one SCENE");
     r.scene = positional[0];
+    if ((r.envRotateGiven || r.envScaleGiven) && r.env.empty())
+        throw UsageError(std::string(r.envRotateGiven ? "--env-rotate" : "--env-scale") + " needs --env PATH");
     bool anyAov = r.aovVariance || r.aovAlbedo || r.aovNormal || r.aovDepth;
     if (anyAov && formatFromPath(r.output) != ImageFormat::Exr)
         throw UsageError("--aov needs an .exr output; \"" + r.output + "\" cannot hold extra layers");
@@ -296,6 +314,11 @@ void addMetadata(Image& image, const RenderArgs& args, const Scene& scene, const
     text("pt:scene", args.scene);
     text("pt:sceneResolved", ec ? args.scene : resolved);
     text("pt:camera", camera);
+    if (!args.env.empty()) {
+        text("pt:env", args.env);
+        real("pt:envRotate", args.envRotate);
+        real("pt:envScale", args.envScale);
+    }
     integer("pt:spp", result.film.minSamples());
     integer("pt:sppRequested", args.spp);
     integer("pt:seed", (long long)args.settings.seed);
@@ -348,6 +371,20 @@ int renderCommand(int argc, char** argv) {
                           "for this machine)\n", args.scene.c_str());
         return 1;
     }
+    if (!args.env.empty()) {
+        try {
+            std::string warning;
+            scene.environment.map = std::make_shared<const EnvironmentMap>(
+                readEnvironmentMap(args.env, float(args.envRotate), float(args.envScale), warning));
+            if (!warning.empty()) warnings.add(warning);
+        } catch (const LoadError& e) {
+            std::fprintf(err, "pt: error: %s\n", e.what());
+            return 1;
+        } catch (const std::bad_alloc&) {
+            std::fprintf(err, "pt: error: %s: out of memory while reading the environment map\n", args.env.c_str());
+            return 1;
+        }
+    }
     double loadSeconds = secondsSince(t0);
 
     int hardware = tbb::info::default_concurrency();
@@ -364,6 +401,7 @@ int renderCommand(int argc, char** argv) {
         cameraIndex = pickCamera(scene, args.camera);
         std::vector<std::string> inputs = scene.sources;
         for (size_t i = 0; i < scene.textures->size(); ++i) inputs.push_back((*scene.textures)[int(i)].path);
+        if (!args.env.empty()) inputs.push_back(args.env);
         std::string problem = outputIsInput({args.output, partial}, inputs);
         // Created now, before any rendering: a folder that refuses it fails here, not in an hour.
         if (problem.empty()) problem = output.open(args.output);

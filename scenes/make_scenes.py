@@ -39,6 +39,14 @@ textured:    every texture map of issue 11, one per object so that each can be c
                TexCutout    map_d from the PNG's alpha: a frame with bars and holes;
                TexVeil      d 0.8 with map_d from the alpha: a frame of coverage 0.8, a window
                             of 0.8 * 160/255 = 0.50, an empty window with an opaque dot.
+outdoor:     objects on a large ground plane with no light of their own, lit by an environment
+             (pt render scenes/outdoor.obj --env scenes/env_sun.exr): from the left a white
+             Lambert sphere, a rough gold sphere (Pm 1, alpha 0.05), a glass sphere and a
+             red rough plastic box.
+env_sun.exr: a 256x128 lat-long sky: a gradient from blue at the zenith to pale at the horizon,
+             a dim brown ground below it, and a one-texel sun of radiance 6,000 at elevation
+             35 degrees towards -z rotated 40 degrees about +y (u = 0.25 + 40/360).
+env_marker.exr: a 64x32 black map with marker texels (see ENV_MARKERS) for the convention test.
 """
 import math
 import os
@@ -402,9 +410,81 @@ def textured():
         f.write("newmtl TexVeil\n\tKd 0.8 0.75 0.6\n\td 0.8\n\tmap_d tex_veil.png\n")
 
 
+def write_exr(name, pixels):
+    """A half-float EXR next to this script from a (height, width, 3) array, row 0 on top."""
+    pixels = np.ascontiguousarray(pixels, dtype=np.float32)
+    h, w, c = pixels.shape
+    path = os.path.join(HERE, name)
+    out = oiio.ImageOutput.create(path)
+    spec = oiio.ImageSpec(w, h, c, oiio.HALF)
+    spec.attribute("compression", "zip")
+    if not out or not out.open(path, spec) or not out.write_image(pixels):
+        raise SystemExit(f"make_scenes: cannot write {path}: {out.geterror() if out else oiio.geterror()}")
+    out.close()
+
+
+# Texels (columns x and x + 1, row y) of each marker of env_marker.exr and its colour. With the
+# convention of renderer/light/environment_map.h, the edge between columns x and x + 1 of 64 looks
+# along phi = 2 pi ((x + 1) / 64 - 0.5) from +x towards +z, and row y of 32 at
+# theta = pi (y + 0.5) / 32 from +y.
+ENV_MARKERS = (
+    (15, 15, (8.0, 0.0, 0.0)),   # red: just above the horizon, a quarter of the way across: -z
+    (31, 15, (0.0, 8.0, 0.0)),   # green: the centre: +x
+    (47, 15, (0.0, 0.0, 8.0)),   # blue: three quarters across: +z
+    (31, 4, (8.0, 8.0, 0.0)),    # yellow: high above +x
+)
+
+
+def env_maps():
+    w, h = 256, 128
+    theta = (np.arange(h) + 0.5) / h * np.pi
+    up = np.cos(theta)[:, None, None] * np.ones((1, w, 1))
+    zenith, horizon, ground = np.array([0.25, 0.4, 0.9]), np.array([0.9, 0.95, 1.0]), np.array([0.12, 0.09, 0.06])
+    t = np.clip(up, 0.0, 1.0) ** 0.5
+    sky = horizon * (1 - t) + zenith * t
+    img = np.where(up > 0, sky, ground * np.ones((h, w, 3)))
+    elevation, azimuth = 35.0, 40.0
+    sx = int((0.25 + azimuth / 360.0) * w)
+    sy = int((90.0 - elevation) / 180.0 * h)
+    img[sy, sx] = (6000.0, 5600.0, 4800.0)
+    write_exr("env_sun.exr", img)
+    marker = np.zeros((32, 64, 3))
+    for x, y, c in ENV_MARKERS:
+        marker[y, x] = marker[y, x + 1] = c
+    write_exr("env_marker.exr", marker)
+
+
+def outdoor():
+    o = Obj()
+    o.use("Ground")
+    o.quad((-30, 0, 30), (30, 0, 30), (30, 0, -30), (-30, 0, -30))
+    o.use("White")
+    o.sphere((-1.5, 0.5, 0.0), 0.5, rings=24, segments=48)
+    o.use("Gold")
+    o.sphere((-0.4, 0.5, -0.6), 0.5, rings=24, segments=48)
+    o.use("Glass")
+    o.sphere((0.7, 0.5, 0.2), 0.5, rings=24, segments=48)
+    o.use("RedBox")
+    o.box((1.4, 0.0, -1.2), (2.2, 0.8, -0.4))
+    o.write(os.path.join(HERE, "outdoor.obj"), "outdoor.mtl",
+            "Objects on a ground plane, no lights: render with --env (scenes/env_sun.exr) or the lab sky")
+    with open(os.path.join(HERE, "outdoor.mtl"), "w") as f:
+        f.write("# No light sources: an environment map lights the scene (pt render --env).\n\n")
+        f.write("newcamera Front\n\tcameraposition 0.0 1.6 5.5\n\tcameratarget 0.2 0.4 0.0\n"
+                "\tcameraup 0.0 1.0 0.0\n\tcamerafov 40.0\n\n")
+        f.write("newmtl Ground\n\tKd 0.5 0.5 0.5\n\n")
+        f.write("newmtl White\n\tKd 0.8 0.8 0.8\n\n")
+        f.write("newmtl Gold\n\tKd 0 0 0\n\tKs 0.95 0.75 0.45\n\tNi 1.5\n\tPm 1.0\n\tspecularroughness 0.05\n\n")
+        f.write("newmtl Glass\n\tKs 1 1 1\n\treflat0deg 0.04\n\treflat90deg 1.0\n\tTr 1.0\n\tNi 1.5\n\n")
+        f.write("newmtl RedBox\n\tKd 0.6 0.1 0.08\n\treflat0deg 0.05\n\treflat90deg 1.0\n"
+                "\tspecularroughness 0.2\n")
+
+
 if __name__ == "__main__":
     cornell_box()
     glass()
     mis_lights()
     rough()
     textured()
+    env_maps()
+    outdoor()

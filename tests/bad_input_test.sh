@@ -232,6 +232,23 @@ check double_dash_ends_options 0 "8x8, 1 spp" render -spp 1 --res 8x8 -o out/a.e
 cp m.obj ./-dash.obj
 check dash_named_scene 0 "8x8, 1 spp" render -spp 1 --res 8x8 -o out/a.exr -- -dash.obj
 check threads_beyond_cores 0 "this machine runs $(nproc) threads at once; using $(nproc)" render m.obj --threads 4096 -spp 1 --res 8x8 -o out/a.exr
+
+# Environment maps (--env): each fault is an error naming the file, exit 1, nothing written.
+oiiotool --pattern constant:color=1,nan,1 8x4 3 -d float -o nan_env.exr
+oiiotool --pattern constant:color=1,1,-1 8x4 3 -d float -o negative_env.exr
+oiiotool --pattern constant:color=1,1,1 8x4 3 -d uint8 -o ldr_env.png
+oiiotool --pattern constant:color=1,1,1 8x8 3 -d half -o square_env.exr
+head -c 2000 /dev/urandom > corrupt_env.exr
+check env_missing 1 'environment map "no_such.exr" not found' render m.obj --env no_such.exr -spp 1 --res 8x8 -o out/a.exr
+check env_nan 1 'environment map "nan_env.exr": pixel (0, 0) channel 1 is nan' render m.obj --env nan_env.exr -spp 1 --res 8x8 -o out/a.exr
+check env_negative 1 'pixel (0, 0) channel 2 is -1; radiance must be finite and not negative' render m.obj --env negative_env.exr -spp 1 --res 8x8 -o out/a.exr
+check env_not_float 1 'environment map "ldr_env.png" holds uint8 values; expected float or half' render m.obj --env ldr_env.png -spp 1 --res 8x8 -o out/a.exr
+check env_corrupt 1 'cannot read environment map "corrupt_env.exr"' render m.obj --env corrupt_env.exr -spp 1 --res 8x8 -o out/a.exr
+check env_folder 1 'environment map "out" is not a regular file' render m.obj --env out -spp 1 --res 8x8 -o out/a.exr
+check env_not_2_to_1 0 'is 8x8, not twice as wide as high' render m.obj --env square_env.exr -spp 1 --res 8x8 -o out/a.exr
+check env_rotate_alone 2 '--env-rotate needs --env PATH' render m.obj --env-rotate 30 -o out/a.exr
+check env_scale_negative 2 'option --env-scale: -1 is out of range' render m.obj --env square_env.exr --env-scale -1 -o out/a.exr
+check env_is_output 2 'square_env.exr' render m.obj --env square_env.exr -spp 1 -o square_env.exr
 "$pt" render m.obj --threads 4096 -spp 1 --res 8x8 -o threads.exr > /dev/null 2>&1
 oiiotool --info -v threads.exr | grep -q "pt:threads: $(nproc)$" || fail "threads_beyond_cores: pt:threads is not $(nproc)"
 oiiotool --info -v threads.exr | grep -q "pt:threadsRequested: 4096" || fail "threads_beyond_cores: pt:threadsRequested is not recorded"

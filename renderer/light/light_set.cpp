@@ -10,6 +10,19 @@
 #include <tuple>
 
 namespace pt {
+namespace {
+
+// Radius of a sphere about the bounds' centre that holds every triangle and sphere light.
+double sceneBoundingRadius(const Scene& scene) {
+    Vec3 lo(kInf), hi(-kInf);
+    for (const Vec3& p : scene.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    for (const SphereLight& l : scene.lights) lo = glm::min(lo, l.center - l.radius), hi = glm::max(hi, l.center + l.radius);
+    if (!(hi.x >= lo.x)) return 1.0;
+    double r = 0.5 * double(glm::length(hi - lo));
+    return r > 0.0 ? r : 1.0;
+}
+
+} // namespace
 
 LightSet::LightSet(const Scene& scene) : scene_(scene) {
     std::vector<double> power; // in double: 2 pi A Le can pass float's range
@@ -53,6 +66,18 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
             power.push_back(2.0 * kPi * double(area) * double(average(m.emission))); // both sides emit
         }
     }
+    if (scene.environment.map) {
+        environment_ = std::make_unique<EnvironmentLight>(*scene.environment.map);
+        // Its power as the light that crosses the scene's bounding disk: pi R^2 times the
+        // radiance integrated over the sphere.
+        double radius = sceneBoundingRadius(scene);
+        double p = kPi * radius * radius * environment_->radiantIntensityIntegral();
+        if (p > 0.0) {
+            environmentEmitter_ = uint32_t(emitters_.size());
+            emitters_.push_back(Emitter{Emitter::Kind::Environment, 0});
+            power.push_back(p);
+        }
+    }
     distribution_ = Distribution1D(power);
 }
 
@@ -88,6 +113,11 @@ LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {
         s.pdf = sphereCapPdf(cap);
         return s;
     }
+    if (e.kind == Emitter::Kind::Environment) {
+        s.wi = environment_->sample(u, s.radiance, s.pdf);
+        s.distance = kInf;
+        return s;
+    }
     // Emissive triangle: uniform by area, converted to solid angle.
     const glm::uvec3& tri = scene_.triPositions[e.index];
     const Vec3 &a = scene_.positions[tri[0]], &b = scene_.positions[tri[1]], &c = scene_.positions[tri[2]];
@@ -114,6 +144,7 @@ float LightSet::pdf(size_t i, const Vec3& p, const Vec3& wi, float distance) con
     const Emitter& e = emitters_[i];
     if (e.kind == Emitter::Kind::Point) return 0.0f;
     if (e.kind == Emitter::Kind::Sphere) return sphereCapPdf(sphereCap(p, e.center, e.radius));
+    if (e.kind == Emitter::Kind::Environment) return environment_->pdf(wi);
     const glm::uvec3& tri = scene_.triPositions[e.index];
     const Vec3 &a = scene_.positions[tri[0]], &b = scene_.positions[tri[1]], &c = scene_.positions[tri[2]];
     Vec3 n = glm::cross(b - a, c - a);

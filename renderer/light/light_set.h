@@ -1,28 +1,31 @@
 // Every emitter of a scene in one list, chosen for next-event estimation in proportion to its
-// power: sphere lights, point lights and emissive triangles. Built once per render.
+// power: sphere lights, point lights, emissive triangles and an environment map. Built once per
+// render.
 #pragma once
 
 #include "core/math.h"
+#include "light/environment_light.h"
 #include "sampling/distribution1d.h"
 #include "scene/scene.h"
 
+#include <memory>
 #include <vector>
 
 namespace pt {
 
 struct Emitter {
-    enum class Kind : uint8_t { Sphere, Point, Triangle };
+    enum class Kind : uint8_t { Sphere, Point, Triangle, Environment };
     Kind kind;
     uint32_t index;    // into Scene::lights, or a triangle index
     Vec3 center{0.0f}; // sphere and point lights
     float radius = 0.0f;
-    Spectrum radiance{0.0f}; // sphere: I / (pi r^2); point: intensity I; triangle: Le
+    Spectrum radiance{0.0f}; // sphere: I / (pi r^2); point: intensity I; triangle: Le; environment: unused
 };
 
 // A point on a light seen from a shading point, with what a shadow ray needs to reach it.
 struct LightSample {
     Vec3 wi;              // unit direction from the shading point to the light
-    float distance = 0.0f; // to the sampled point (for spheres: to the sphere's surface)
+    float distance = 0.0f; // to the sampled point (for spheres: to the sphere's surface; environment: inf)
     Spectrum radiance;    // emitted radiance towards the shading point; for point lights I / d^2
     float pdf = 0.0f;     // solid-angle density, emitter choice excluded; 0 means no sample
     bool delta = false;   // point light: cannot be hit by BSDF sampling
@@ -52,6 +55,9 @@ public:
     // Emitter index of a sphere light or an emissive triangle, for MIS when a BSDF ray hits it.
     uint32_t emitterOfLight(uint32_t lightIndex) const { return lightEmitter_[lightIndex]; }
     uint32_t emitterOfTriangle(uint32_t prim) const { return triangleEmitter_[prim]; }
+    // Emitter index of the environment map, or ~0u when the environment is the lab's two tones
+    // (not a light: BSDF sampling alone reaches it, as in the lab).
+    uint32_t environmentEmitter() const { return environmentEmitter_; }
 
     // Samples a point on emitter i as seen from p.
     LightSample sample(size_t i, const Vec3& p, Vec2 u) const;
@@ -65,6 +71,8 @@ private:
     Distribution1D distribution_;
     std::vector<uint32_t> lightEmitter_;
     std::vector<uint32_t> triangleEmitter_; // empty unless the scene has emissive triangles
+    std::unique_ptr<EnvironmentLight> environment_;
+    uint32_t environmentEmitter_ = ~0u;
 };
 
 } // namespace pt

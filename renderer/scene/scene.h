@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/math.h"
+#include "light/environment_map.h"
 #include "texture/texture_cache.h"
 
 #include <cstdint>
@@ -68,13 +69,18 @@ struct Material {
     }
 };
 
-// Radiance seen by rays that leave the scene: `sky` for directions with y > 0, else `ground`.
+// Radiance seen by rays that leave the scene: an HDR map where one is given (it is then a light of
+// the light set, sampled by next-event estimation), else the lab's two tones, `sky` for
+// directions with y > 0 and `ground` below, reached by BSDF sampling only as the lab has it.
 struct Environment {
     Spectrum sky{0.5f, 0.6f, 0.7f};
     Spectrum ground{0.05f, 0.025f, 0.001f};
+    std::shared_ptr<const EnvironmentMap> map;
 
-    Spectrum radiance(const Vec3& dir) const { return dir.y > 0.0f ? sky : ground; }
-    bool isBlack() const { return pt::isBlack(sky) && pt::isBlack(ground); }
+    Spectrum radiance(const Vec3& dir) const {
+        if (map) return map->radiance(dir);
+        return dir.y > 0.0f ? sky : ground;
+    }
 };
 
 struct Scene {

@@ -1,0 +1,49 @@
+#include "light/environment_light.h"
+
+#include <cmath>
+
+namespace pt {
+
+EnvironmentLight::EnvironmentLight(const EnvironmentMap& map) : map_(map) {
+    const int w = map.width, h = map.height;
+    std::vector<double> level(size_t(w) * size_t(h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) level[size_t(y) * w + x] = average(map.texel(x, y));
+    std::vector<double> weights(level.size());
+    for (int y = 0; y < h; ++y) {
+        // The row's exact solid angle per texel, so that a constant map integrates to 4 pi.
+        double rowSolidAngle = (2.0 * kPi / w) * (std::cos(kPi * y / h) - std::cos(kPi * (y + 1) / h));
+        for (int x = 0; x < w; ++x) {
+            double m = 0.0;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    int yy = std::clamp(y + dy, 0, h - 1), xx = ((x + dx) % w + w) % w;
+                    m = std::max(m, level[size_t(yy) * w + xx]);
+                }
+            weights[size_t(y) * w + x] = m * rowSolidAngle;
+            integral_ += level[size_t(y) * w + x] * rowSolidAngle;
+        }
+    }
+    distribution_ = Distribution2D(weights, w, h);
+}
+
+Vec3 EnvironmentLight::sample(Vec2 u, Spectrum& radiance, float& pdf) const {
+    float pdfUv;
+    Vec2 uv = distribution_.sample(u, pdfUv);
+    Vec3 d = EnvironmentMap::uvToDirection(uv);
+    // d(omega) = sin(theta) d(theta) d(phi) = 2 pi^2 sin(theta) du dv; sin(theta) from the
+    // direction itself, as pdf() computes it, so that both agree at the poles too.
+    float sinTheta = std::hypot(d.x, d.z);
+    pdf = pdfUv > 0.0f && sinTheta > 0.0f ? pdfUv / (2.0f * kPi * kPi * sinTheta) : 0.0f;
+    radiance = map_.lookup(uv);
+    return map_.toWorld(d);
+}
+
+float EnvironmentLight::pdf(const Vec3& dir) const {
+    Vec3 d = map_.toMap(dir);
+    float sinTheta = std::hypot(d.x, d.z);
+    if (!(sinTheta > 0.0f)) return 0.0f;
+    return distribution_.pdf(EnvironmentMap::directionToUv(d)) / (2.0f * kPi * kPi * sinTheta);
+}
+
+} // namespace pt
