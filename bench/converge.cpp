@@ -64,11 +64,12 @@ struct Options {
     uint32_t referenceSpp = 4096;
     int threads = 0;
     std::string outDir = "bench/results";
+    std::string env; // an environment map, as pt render --env
 };
 
 int usage(int status) {
     std::fputs("usage: pt-bench converge [--scene PATH] [--name NAME] [--res WxH] [--budget SECONDS]\n"
-               "                        [--reference-spp N] [--threads N] [--out DIR]\n"
+               "                        [--reference-spp N] [--threads N] [--out DIR] [--env MAP]\n"
                "defaults: lab cornell, name from the scene file, 256x256, 16 s per method, 4096-spp\n"
                "          reference cached in DIR, CSV to DIR/converge_NAME.csv, DIR = bench/results\n",
                status == 0 ? stdout : stderr);
@@ -93,6 +94,7 @@ int runConverge(int argc, char** argv) {
         else if (a == "--reference-spp") o.referenceSpp = uint32_t(std::stoul(next()));
         else if (a == "--threads") o.threads = std::stoi(next());
         else if (a == "--out") o.outDir = next();
+        else if (a == "--env") o.env = next();
         else if (a == "-h" || a == "--help") return usage(0);
         else return usage(2);
     }
@@ -102,6 +104,10 @@ int runConverge(int argc, char** argv) {
 
     Warnings warnings;
     Scene scene = loadScene(o.scene, warnings);
+    if (!o.env.empty()) {
+        std::string warning;
+        scene.environment.map = std::make_shared<const EnvironmentMap>(readEnvironmentMap(o.env, 0.0f, 1.0f, warning));
+    }
     std::unique_ptr<Accel> accel;
     tbb::task_arena(threads).execute([&] { accel = std::make_unique<Accel>(scene, threads); });
     const Camera& camera = scene.cameras[0];

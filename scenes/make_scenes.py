@@ -47,6 +47,9 @@ env_sun.exr: a 256x128 lat-long sky: a gradient from blue at the zenith to pale 
              a dim brown ground below it, and a one-texel sun of radiance 6,000 at elevation
              35 degrees towards -z rotated 40 degrees about +y (u = 0.25 + 40/360).
 env_marker.exr: a 64x32 black map with marker texels (see ENV_MARKERS) for the convention test.
+env_probe:   a mirror ball right of centre, for looking at a map: the camera looks along -z, so the
+             background in the middle of the image is -z (the red marker of env_marker.exr),
+             and the ball reflects +x on its right and +z (behind the camera) near its middle.
 """
 import math
 import os
@@ -454,6 +457,18 @@ def env_maps():
     write_exr("env_marker.exr", marker)
 
 
+def env_probe():
+    o = Obj()
+    o.use("Mirror")
+    o.sphere((1.1, 0.0, 0.0), 0.7, rings=48, segments=96)
+    o.write(os.path.join(HERE, "env_probe.obj"), "env_probe.mtl",
+            "A mirror ball for looking at environment maps (pt render --env)")
+    with open(os.path.join(HERE, "env_probe.mtl"), "w") as f:
+        f.write("newcamera AlongMinusZ\n\tcameraposition 0.0 0.0 4.0\n\tcameratarget 0.0 0.0 0.0\n"
+                "\tcameraup 0.0 1.0 0.0\n\tcamerafov 60.0\n\n")
+        f.write("newmtl Mirror\n\tKd 0 0 0\n\tKs 1 1 1\n\treflat0deg 1.0\n\treflat90deg 1.0\n")
+
+
 def outdoor():
     o = Obj()
     o.use("Ground")
@@ -487,4 +502,5 @@ if __name__ == "__main__":
     rough()
     textured()
     env_maps()
+    env_probe()
     outdoor()

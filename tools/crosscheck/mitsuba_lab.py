@@ -22,6 +22,13 @@ Mitsuba's two additions switched off (flip_invalid_normals, use_shadowing_functi
 shadow rays pass through masks with transmittance 1 - alpha. See build_material for what these
 cannot express; anything else stops the script.
 
+An environment map (--env, issue 12) is Mitsuba's `envmap` emitter turned by 90 degrees about +y
+plus --env-rotate: Mitsuba's u runs from -z towards +x, pt's centre column looks along +x (the
+convention of Blender for a y-up scene). Mitsuba keeps pt's texel centres across (u), but puts
+its first and last rows on the poles, so it gets 2H + 1 rows resampled from pt's bilinear
+interpolant at v = r / 2H: between those rows pt's interpolant is linear, so both renderers see
+the same radiance in every direction.
+
 The image is the mean of PASSES independent renders; the spread between passes gives the
 variance of that mean, written as the `variance` layer pt diff reads. Run it with
 tools/crosscheck/run, which installs Mitsuba into a virtual environment.
@@ -412,7 +419,25 @@ def build_material(name, m, pt_normals, pos, nrm, uv):
 
 
 # ---------------------------------------------------------------- scene dict
-def build_scene(obj_path, camera_index, width, height, max_depth, pt_normals, tmp, rr_depth=5):
+def environment_map(path, rotate, scale):
+    """Mitsuba's envmap emitter for pt --env PATH --env-rotate ROTATE --env-scale SCALE."""
+    pixels, _, is_float = read_image(path)
+    if not is_float:
+        fail(f"{path}: an environment map holds float or half values")
+    rgb = pixels[:, :, :3] if pixels.shape[2] >= 3 else np.repeat(pixels[:, :, :1], 3, axis=2)
+    h = rgb.shape[0]
+    # pt's rows sit at v = (i + 0.5) / h and clamp at the poles; Mitsuba's row r of R at r / (R - 1).
+    v = np.arange(2 * h + 1) / (2 * h)
+    y = np.clip(v * h - 0.5, 0, h - 1)
+    y0 = np.floor(y).astype(int)
+    y1 = np.minimum(y0 + 1, h - 1)
+    t = (y - y0)[:, None, None]
+    rows = (1 - t) * rgb[y0] + t * rgb[y1]
+    return {"type": "envmap", "bitmap": mi.Bitmap(np.ascontiguousarray(rows * scale, dtype=np.float32)),
+            "to_world": mi.ScalarTransform4f().rotate([0, 1, 0], 90.0 + rotate)}
+
+
+def build_scene(obj_path, camera_index, width, height, max_depth, pt_normals, tmp, rr_depth=5, env=None):
     mtllib, groups = parse_obj(obj_path)
     materials, lights, cameras = parse_mtl(mtllib)
     if not cameras:
@@ -439,10 +464,12 @@ def build_scene(obj_path, camera_index, width, height, max_depth, pt_normals, tm
     # The environment: sky above the horizon, ground below. A tall lat-long map keeps the
     # bilinear seam at the horizon within 1/4096 of a half-turn.
     rows = 4096
-    env = np.zeros((rows, 4, 3), dtype=np.float32)
-    env[: rows // 2] = SKY
-    env[rows // 2:] = GROUND
-    scene["env"] = {"type": "envmap", "bitmap": mi.Bitmap(env)}
+    sky = np.zeros((rows, 4, 3), dtype=np.float32)
+    sky[: rows // 2] = SKY
+    sky[rows // 2:] = GROUND
+    scene["env"] = {"type": "envmap", "bitmap": mi.Bitmap(sky)}
+    if env:
+        scene["env"] = environment_map(*env)
     for i, light in enumerate(lights):
         intensity = [c * light["intensity"] for c in light["color"]]
         if light["radius"] > 0:
@@ -476,13 +503,17 @@ def main():
     ap.add_argument("--rr-depth", type=int, default=5, help="Mitsuba's depth at which Russian roulette starts [5]")
     ap.add_argument("--pt-normals", action="store_true",
                     help="apply pt's rules where interpolated normals disagree with the geometry")
+    ap.add_argument("--env", help="an environment map, as pt render --env")
+    ap.add_argument("--env-rotate", type=float, default=0.0)
+    ap.add_argument("--env-scale", type=float, default=1.0)
     ap.add_argument("--bench", type=int, default=0, metavar="K",
                     help="instead: time K frames of --spp after one warm-up frame (which compiles the kernel)")
     a = ap.parse_args()
     width, height = (int(x) for x in a.res.lower().split("x"))
     import time
     with tempfile.TemporaryDirectory() as tmp:
-        scene = build_scene(a.scene, a.camera, width, height, a.max_depth, a.pt_normals, tmp, a.rr_depth)
+        env = (a.env, a.env_rotate, a.env_scale) if a.env else None
+        scene = build_scene(a.scene, a.camera, width, height, a.max_depth, a.pt_normals, tmp, a.rr_depth, env)
         if a.bench:
             times = []
             for k in range(a.bench + 1):
