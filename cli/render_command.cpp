@@ -32,6 +32,7 @@ const char* kRenderUsage = R"(usage: pt render SCENE [options]
 Renders SCENE (Wavefront .obj with the lab's extended .mtl) and writes one image.
 MTL texture maps: map_Kd, map_Ks (colour), map_Pr, map_Pm, norm, bump/map_bump, map_d (data),
 with options -s, -o, -clamp on|off, -bm, -imfchan r|g|b|m|l (see the README).
+MTL environment: newenvironment NAME, envmap FILE, envrotate DEG, envscale S (--env replaces it).
 
 options (default in brackets):
   -o, --output PATH      output image [out.exr]; the extension picks the format:
@@ -58,7 +59,8 @@ options (default in brackets):
                            depth     distance to the first hit, +inf where none (depth.Z)
   --env PATH             light the scene with an HDR lat-long environment map (EXR, HDR,
                          float TIFF; +y up, laid out as in Blender), importance-sampled
-                         as a light; without it the lab's two-tone sky [none]
+                         as a light; it replaces the MTL's newenvironment, and without
+                         either the lab's two-tone sky lights the scene [none]
   --env-rotate DEG       turn the map about +y by DEG degrees [0]
   --env-scale S          multiply the map's radiance by S [1]
   --clamp X              scale down any sample whose largest channel exceeds X: fewer
@@ -314,10 +316,10 @@ void addMetadata(Image& image, const RenderArgs& args, const Scene& scene, const
     text("pt:scene", args.scene);
     text("pt:sceneResolved", ec ? args.scene : resolved);
     text("pt:camera", camera);
-    if (!args.env.empty()) {
-        text("pt:env", args.env);
-        real("pt:envRotate", args.envRotate);
-        real("pt:envScale", args.envScale);
+    if (const auto& map = scene.environment.map) { // from --env or the MTL
+        text("pt:env", map->path);
+        real("pt:envRotate", double(map->rotation) * 180.0 / kPi);
+        real("pt:envScale", map->scale);
     }
     integer("pt:spp", result.film.minSamples());
     integer("pt:sppRequested", args.spp);

@@ -43,6 +43,9 @@ outdoor:     objects on a large ground plane with no light of their own, lit by 
              (pt render scenes/outdoor.obj --env scenes/env_sun.exr): from the left a white
              Lambert sphere, a rough gold sphere (Pm 1, alpha 0.05), a glass sphere and a
              red rough plastic box.
+sunlit:      outdoor without the glass sphere, for the convergence study: a sun seen through glass
+             is a caustic that only BSDF sampling finds, and its fireflies would swamp the
+             difference that importance sampling the map makes on the other objects.
 env_sun.exr: a 256x128 lat-long sky: a gradient from blue at the zenith to pale at the horizon,
              a dim brown ground below it, and a one-texel sun of radiance 6,000 at elevation
              35 degrees towards -z rotated 40 degrees about +y (u = 0.25 + 40/360).
@@ -421,6 +424,7 @@ def write_exr(name, pixels):
     out = oiio.ImageOutput.create(path)
     spec = oiio.ImageSpec(w, h, c, oiio.HALF)
     spec.attribute("compression", "zip")
+    spec.attribute("DateTime", "2026:01:01 00:00:00")  # a fixed stamp: rerunning the script changes no file
     if not out or not out.open(path, spec) or not out.write_image(pixels):
         raise SystemExit(f"make_scenes: cannot write {path}: {out.geterror() if out else oiio.geterror()}")
     out.close()
@@ -469,7 +473,7 @@ def env_probe():
         f.write("newmtl Mirror\n\tKd 0 0 0\n\tKs 1 1 1\n\treflat0deg 1.0\n\treflat90deg 1.0\n")
 
 
-def outdoor():
+def outdoor(name="outdoor", glass=True):
     o = Obj()
     o.use("Ground")
     o.quad((-30, 0, 30), (30, 0, 30), (30, 0, -30), (-30, 0, -30))
@@ -477,13 +481,14 @@ def outdoor():
     o.sphere((-1.5, 0.5, 0.0), 0.5, rings=24, segments=48)
     o.use("Gold")
     o.sphere((-0.4, 0.5, -0.6), 0.5, rings=24, segments=48)
-    o.use("Glass")
-    o.sphere((0.7, 0.5, 0.2), 0.5, rings=24, segments=48)
+    if glass:
+        o.use("Glass")
+        o.sphere((0.7, 0.5, 0.2), 0.5, rings=24, segments=48)
     o.use("RedBox")
     o.box((1.4, 0.0, -1.2), (2.2, 0.8, -0.4))
-    o.write(os.path.join(HERE, "outdoor.obj"), "outdoor.mtl",
+    o.write(os.path.join(HERE, name + ".obj"), name + ".mtl",
             "Objects on a ground plane, no lights: render with --env (scenes/env_sun.exr) or the lab sky")
-    with open(os.path.join(HERE, "outdoor.mtl"), "w") as f:
+    with open(os.path.join(HERE, name + ".mtl"), "w") as f:
         f.write("# No light sources: an environment map lights the scene (pt render --env).\n\n")
         f.write("newcamera Front\n\tcameraposition 0.0 1.6 5.5\n\tcameratarget 0.2 0.4 0.0\n"
                 "\tcameraup 0.0 1.0 0.0\n\tcamerafov 40.0\n\n")
@@ -504,3 +509,4 @@ if __name__ == "__main__":
     env_maps()
     env_probe()
     outdoor()
+    outdoor("sunlit", glass=False)

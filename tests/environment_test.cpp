@@ -5,6 +5,7 @@
 #include "image/compare.h"
 #include "sampling/rng.h"
 #include "scene/load_error.h"
+#include "scene/mtl_loader.h"
 #include "tests/chi_square.h"
 #include "tests/test_scenes.h"
 
@@ -274,6 +275,57 @@ TEST(EnvironmentMap, BadFilesAreErrorsNamingTheFile) {
         EXPECT_NE(std::string(e.what()).find("checker.png"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("float"), std::string::npos) << e.what();
     }
+}
+
+
+// The MTL's environment block: a scene can carry its lighting.
+Scene parseMtlText(const std::string& text) {
+    Scene scene;
+    std::unordered_map<std::string, uint32_t> index;
+    Warnings warnings;
+    parseMtl(text, PT_SOURCE_DIR "/scenes/test.mtl", scene, index, warnings);
+    return scene;
+}
+
+std::string mtlErrorOf(const std::string& text) {
+    try {
+        parseMtlText(text);
+    } catch (const LoadError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+TEST(EnvironmentMtl, BlockReadsTheMapBesideTheMtl) {
+    Scene s = parseMtlText("newenvironment Sky\n\tEnvMap env_marker.exr\n\tenvrotate 90\n\tENVSCALE 2\nnewmtl A\n");
+    ASSERT_TRUE(s.environment.map);
+    EXPECT_EQ(s.environment.map->width, 64);
+    EXPECT_NEAR(s.environment.map->rotation, 0.5f * kPi, 1e-6f);
+    EXPECT_EQ(s.environment.map->scale, 2.0f);
+    // Turned by 90 degrees and doubled: what was along +x (green, 8) comes from -z.
+    const float lift = std::cos(kPi * 15.5f / 32.0f);
+    Spectrum L = s.environment.map->radiance(glm::normalize(Vec3(0, lift, -1)));
+    EXPECT_NEAR(L.y, 16.0f, 0.2f);
+    EXPECT_EQ(s.sources.back(), PT_SOURCE_DIR "/scenes/env_marker.exr");
+}
+
+TEST(EnvironmentMtl, ErrorsNameTheLine) {
+    EXPECT_NE(mtlErrorOf("envmap env_marker.exr\n").find("test.mtl:1: envmap outside a newenvironment block"),
+              std::string::npos);
+    EXPECT_NE(mtlErrorOf("newenvironment A\nenvmap env_marker.exr\nnewenvironment B\n")
+                  .find("test.mtl:3: newenvironment: the scene already has one (line 1)"),
+              std::string::npos);
+    EXPECT_NE(mtlErrorOf("newenvironment A\nenvrotate 10\n").find("test.mtl:1: newenvironment: the block has no envmap"),
+              std::string::npos);
+    EXPECT_NE(mtlErrorOf("newenvironment A\n\nenvmap no_such.exr\n").find("test.mtl:3: environment map"),
+              std::string::npos);
+    EXPECT_NE(mtlErrorOf("newenvironment A\nenvmap checker.png\n").find("test.mtl:2: environment map"),
+              std::string::npos);
+    EXPECT_NE(mtlErrorOf("newenvironment A\nenvmap env_marker.exr\nenvscale -1\n").find("test.mtl:3: envscale"),
+              std::string::npos);
+    EXPECT_NE(mtlErrorOf("newenvironment A\nenvmap env_marker.exr\nenvrotate x\n").find("test.mtl:3: envrotate"),
+              std::string::npos);
+    EXPECT_NE(mtlErrorOf("newenvironment\n").find("test.mtl:1: newenvironment: expected a name"), std::string::npos);
 }
 
 } // namespace

@@ -14,6 +14,7 @@ if [[ ! -f "$root/$scene" ]]; then
   exit 77
 fi
 mkdir -p "$out"
+cd "$root" || exit 1 # paths among the options (--env MAP) are relative to the repository root
 # shellcheck disable=SC2086
 "$pt" render "$root/$scene" --camera "$camera" --res "$res" -spp "$test_spp" --seed "${PT_GOLDEN_SEED:-1}" \
   --aov variance -q $extra -o "$out/$name.exr" || exit 1

@@ -1,5 +1,6 @@
 #include "scene/mtl_loader.h"
 
+#include "light/environment_map.h"
 #include "texture/texture_io.h"
 #include "scene/text_parser.h"
 
@@ -11,7 +12,7 @@
 namespace pt {
 namespace {
 
-enum class Block { None, Material, Light, Camera };
+enum class Block { None, Material, Light, Camera, Environment };
 
 // What a map line's texture holds: colour (sRGB-decoded) or data (linear), and which options it takes.
 enum class MapKind { Colour, Scalar, Normal, Bump, Alpha };
@@ -28,6 +29,13 @@ struct PendingLight {
     SphereLight light;
     Spectrum color{1.0f};
     float intensity = 1.0f;
+};
+
+// An environment block: a map file and how to turn and scale it, read when the block ends.
+struct PendingEnvironment {
+    std::string file;         // resolved against the MTL's folder
+    size_t fileLine = 0;
+    float rotate = 0.0f, scale = 1.0f;
 };
 
 // Lines of a camera block's keywords, so an error points at the value that is wrong.
@@ -49,6 +57,8 @@ struct MtlParser {
     PendingLight light;
     Camera camera;
     CameraLines cameraLines;
+    PendingEnvironment environment;
+    size_t environmentLine = 0; // of the scene's newenvironment, once one was seen
     size_t blockLine = 0;
 
     void finishBlock();
@@ -65,7 +75,10 @@ struct MtlParser {
 
 void MtlParser::requireBlock(Block wanted, std::string_view keyword, const Tokens& t) const {
     if (block == wanted) return;
-    const char* name = wanted == Block::Material ? "newmtl" : wanted == Block::Light ? "newlight" : "newcamera";
+    const char* name = wanted == Block::Material      ? "newmtl"
+                       : wanted == Block::Light       ? "newlight"
+                       : wanted == Block::Environment ? "newenvironment"
+                                                      : "newcamera";
     t.fail(std::string(keyword) + " outside a " + name + " block");
 }
 
@@ -266,6 +279,20 @@ void MtlParser::finishBlock() {
         break;
     }
     case Block::Camera: finishCamera(); break;
+    case Block::Environment: {
+        if (environment.file.empty())
+            throw LoadError(path, blockLine, "newenvironment: the block has no envmap line naming its map");
+        std::string warning;
+        try {
+            scene.environment.map = std::make_shared<const EnvironmentMap>(
+                readEnvironmentMap(environment.file, environment.rotate, environment.scale, warning));
+        } catch (const LoadError& e) {
+            throw LoadError(path, environment.fileLine, e.what());
+        }
+        if (!warning.empty()) warnings.add(path + ":" + std::to_string(environment.fileLine) + ": " + warning);
+        scene.sources.push_back(environment.file);
+        break;
+    }
     case Block::None: break;
     }
     block = Block::None;
@@ -303,6 +330,26 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
         camera = Camera{};
         cameraLines = CameraLines{};
         camera.name = blockName("newcamera");
+        return;
+    }
+
+    if (is("newenvironment")) {
+        if (environmentLine)
+            t.fail("newenvironment: the scene already has one (line " + std::to_string(environmentLine) +
+                   "); a scene has at most one environment");
+        finishBlock();
+        block = Block::Environment;
+        blockLine = environmentLine = lines.lineNumber();
+        environment = PendingEnvironment{};
+        blockName("newenvironment");
+        return;
+    }
+    if (is("envmap")) {
+        requireBlock(Block::Environment, keyword, t);
+        std::string file(t.restOfLine());
+        if (file.empty()) t.fail("envmap: expected a file name");
+        environment.file = (std::filesystem::path(path).parent_path() / file).string();
+        environment.fileLine = lines.lineNumber();
         return;
     }
 
@@ -387,6 +434,15 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
         requireBlock(Block::Light, keyword, t);
         light.intensity = nonNegative(t, keyword);
         light.light.source = t.location();
+    }
+    // Environment.
+    else if (is("envrotate")) {
+        requireBlock(Block::Environment, keyword, t);
+        environment.rotate = t.number(keyword);
+        if (!(std::abs(environment.rotate) <= 36000.0f)) t.fail("envrotate: expected degrees in [-36000, 36000]");
+    } else if (is("envscale")) {
+        requireBlock(Block::Environment, keyword, t);
+        environment.scale = nonNegative(t, keyword);
     }
     // Cameras.
     else if (is("cameraposition")) {
