@@ -318,7 +318,7 @@ void addMetadata(Image& image, const RenderArgs& args, const Scene& scene, const
     text("pt:camera", camera);
     if (const auto& map = scene.environment.map) { // from --env or the MTL
         text("pt:env", map->path);
-        real("pt:envRotate", double(map->rotation) * 180.0 / kPi);
+        real("pt:envRotate", double(map->rotation()) * 180.0 / kPi);
         real("pt:envScale", map->scale);
     }
     integer("pt:spp", result.film.minSamples());

@@ -92,7 +92,7 @@ TEST(EnvironmentMap, UvAndDirectionRoundTrip) {
 TEST(EnvironmentMap, RotationTurnsTheMapAboutUp) {
     auto plain = sunMap(40, 9);
     auto turned = std::make_shared<EnvironmentMap>(*plain);
-    turned->rotation = 0.5f * kPi;
+    turned->setRotation(0.5f * kPi);
     Pcg32 rng(3, 1);
     for (int i = 0; i < 500; ++i) {
         Vec3 d = glm::normalize(Vec3(rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f));
@@ -107,7 +107,7 @@ TEST(EnvironmentMap, RotationTurnsTheMapAboutUp) {
 TEST(EnvironmentLight, SamplingMatchesPdfOnASharpSpot) {
     for (float degrees : {0.0f, 37.0f}) {
         auto map = sunMap(21, 10);
-        map->rotation = degrees * kPi / 180.0f;
+        map->setRotation(degrees * kPi / 180.0f);
         EnvironmentLight light(*map);
         bool consistent = true;
         int pdfMismatches = 0;
@@ -240,7 +240,7 @@ TEST(EnvironmentRender, RotatedMapEqualsCounterRotatedScene) {
     Scene turnedMap = groundScene();
     turnedMap.environment.map = sunMap(22, 9);
     auto rotated = std::make_shared<EnvironmentMap>(*turnedMap.environment.map);
-    rotated->rotation = 0.5f * kPi;
+    rotated->setRotation(0.5f * kPi);
     turnedMap.environment.map = rotated;
 
     Scene turnedScene = groundScene();
@@ -300,7 +300,7 @@ TEST(EnvironmentMtl, BlockReadsTheMapBesideTheMtl) {
     Scene s = parseMtlText("newenvironment Sky\n\tEnvMap env_marker.exr\n\tenvrotate 90\n\tENVSCALE 2\nnewmtl A\n");
     ASSERT_TRUE(s.environment.map);
     EXPECT_EQ(s.environment.map->width, 64);
-    EXPECT_NEAR(s.environment.map->rotation, 0.5f * kPi, 1e-6f);
+    EXPECT_NEAR(s.environment.map->rotation(), 0.5f * kPi, 1e-6f);
     EXPECT_EQ(s.environment.map->scale, 2.0f);
     // Turned by 90 degrees and doubled: what was along +x (green, 8) comes from -z.
     const float lift = std::cos(kPi * 15.5f / 32.0f);

@@ -25,12 +25,10 @@ Vec3 EnvironmentMap::uvToDirection(Vec2 uv) {
 
 // Rotation by `rotation` about +y, right-handed (+x turns towards -z).
 Vec3 EnvironmentMap::toWorld(const Vec3& d) const {
-    float c = std::cos(rotation), s = std::sin(rotation);
-    return Vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z);
+    return Vec3(cos_ * d.x + sin_ * d.z, d.y, -sin_ * d.x + cos_ * d.z);
 }
 Vec3 EnvironmentMap::toMap(const Vec3& d) const {
-    float c = std::cos(rotation), s = std::sin(rotation);
-    return Vec3(c * d.x - s * d.z, d.y, s * d.x + c * d.z);
+    return Vec3(cos_ * d.x - sin_ * d.z, d.y, sin_ * d.x + cos_ * d.z);
 }
 
 Spectrum EnvironmentMap::lookup(Vec2 uv) const {
@@ -69,7 +67,7 @@ EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees
     map.path = path;
     map.width = w;
     map.height = h;
-    map.rotation = rotationDegrees * (kPi / 180.0f);
+    map.setRotation(rotationDegrees * (kPi / 180.0f));
     map.scale = scale;
     int read = nc >= 3 ? 3 : 1;
     std::vector<float> values(size_t(w) * size_t(h) * size_t(read));

@@ -6,6 +6,7 @@
 
 #include "core/math.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -15,8 +16,16 @@ struct EnvironmentMap {
     std::string path;
     int width = 0, height = 0;
     std::vector<float> rgb; // linear radiance, row 0 at the top (+y)
-    float rotation = 0.0f;  // radians about +y, right-handed: the map turns with it
     float scale = 1.0f;     // multiplies every texel
+
+    // Radians about +y, right-handed: the map turns with it. Its cosine and sine are kept, as
+    // every lookup and light sample turns a direction.
+    void setRotation(float radians) {
+        rotation_ = radians;
+        cos_ = std::cos(radians);
+        sin_ = std::sin(radians);
+    }
+    float rotation() const { return rotation_; }
 
     // (u, v) in [0, 1)^2 of a unit direction in the map's own frame (v = 0 at +y), and back.
     static Vec2 directionToUv(const Vec3& d);
@@ -33,6 +42,9 @@ struct EnvironmentMap {
         const float* t = &rgb[(size_t(y) * size_t(width) + size_t(x)) * 3];
         return scale * Spectrum(t[0], t[1], t[2]);
     }
+
+private:
+    float rotation_ = 0.0f, cos_ = 1.0f, sin_ = 0.0f;
 };
 
 // Reads a lat-long map through OpenImageIO. It must hold float or half values (EXR, Radiance
