@@ -5,7 +5,6 @@
 #include "image/compare.h"
 #include "sampling/rng.h"
 #include "scene/load_error.h"
-#include "scene/mtl_loader.h"
 #include "tests/chi_square.h"
 #include "tests/test_scenes.h"
 
@@ -157,24 +156,10 @@ TEST(EnvironmentLight, ChosenByPowerBesideASphereLight) {
     EXPECT_EQ(LightSet(s).environmentEmitter(), ~0u);
 }
 
-Camera camera(Vec3 from, Vec3 to, float fov) {
-    Camera c;
-    c.name = "test";
-    c.position = from;
-    c.target = to;
-    c.up = Vec3(0, 1, 0);
-    c.fovY = fov;
-    return c;
-}
-
-std::string modeName(LightSampling m) {
-    return m == LightSampling::Mis ? "mis" : m == LightSampling::Nee ? "nee" : "bsdf";
-}
-
 // A convex white-ish Lambert sphere under a constant map E is a * E where it is seen, whichever
 // strategy finds the light: the map as a light must carry exactly its radiance and density.
 TEST(EnvironmentRender, ConstantMapIsAFurnace) {
-    Scene scene = emptyScene(camera({0, 0, 4}, {0, 0, 0}, 40));
+    Scene scene = emptyScene(lookAt({0, 0, 4}, {0, 0, 0}, 40));
     const Spectrum E(1.0f, 2.0f, 0.5f), a(0.2f, 0.5f, 0.8f);
     scene.environment.map = mapFrom(32, 16, [&](int, int) { return E; });
     Material m;
@@ -191,7 +176,7 @@ TEST(EnvironmentRender, ConstantMapIsAFurnace) {
 
 // A small scene on a ground plane: a diffuse sphere and a glossy one (GGX alpha 0.1 metal).
 Scene groundScene() {
-    Scene scene = emptyScene(camera({0, 1.2f, 3.5f}, {0, 0.4f, 0}, 40));
+    Scene scene = emptyScene(lookAt({0, 1.2f, 3.5f}, {0, 0.4f, 0}, 40));
     Material ground, white, gloss;
     ground.kd = Spectrum(0.5f);
     white.kd = Spectrum(0.8f);
@@ -277,56 +262,6 @@ TEST(EnvironmentMap, BadFilesAreErrorsNamingTheFile) {
     }
 }
 
-
-// The MTL's environment block: a scene can carry its lighting.
-Scene parseMtlText(const std::string& text) {
-    Scene scene;
-    std::unordered_map<std::string, uint32_t> index;
-    Warnings warnings;
-    parseMtl(text, PT_SOURCE_DIR "/scenes/test.mtl", scene, index, warnings);
-    return scene;
-}
-
-std::string mtlErrorOf(const std::string& text) {
-    try {
-        parseMtlText(text);
-    } catch (const LoadError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
-
-TEST(EnvironmentMtl, BlockReadsTheMapBesideTheMtl) {
-    Scene s = parseMtlText("newenvironment Sky\n\tEnvMap env_marker.exr\n\tenvrotate 90\n\tENVSCALE 2\nnewmtl A\n");
-    ASSERT_TRUE(s.environment.map);
-    EXPECT_EQ(s.environment.map->width, 64);
-    EXPECT_NEAR(s.environment.map->rotation(), 0.5f * kPi, 1e-6f);
-    EXPECT_EQ(s.environment.map->scale, 2.0f);
-    // Turned by 90 degrees and doubled: what was along +x (green, 8) comes from -z.
-    const float lift = std::cos(kPi * 15.5f / 32.0f);
-    Spectrum L = s.environment.map->radiance(glm::normalize(Vec3(0, lift, -1)));
-    EXPECT_NEAR(L.y, 16.0f, 0.2f);
-    EXPECT_EQ(s.sources.back(), PT_SOURCE_DIR "/scenes/env_marker.exr");
-}
-
-TEST(EnvironmentMtl, ErrorsNameTheLine) {
-    EXPECT_NE(mtlErrorOf("envmap env_marker.exr\n").find("test.mtl:1: envmap outside a newenvironment block"),
-              std::string::npos);
-    EXPECT_NE(mtlErrorOf("newenvironment A\nenvmap env_marker.exr\nnewenvironment B\n")
-                  .find("test.mtl:3: newenvironment: the scene already has one (line 1)"),
-              std::string::npos);
-    EXPECT_NE(mtlErrorOf("newenvironment A\nenvrotate 10\n").find("test.mtl:1: newenvironment: the block has no envmap"),
-              std::string::npos);
-    EXPECT_NE(mtlErrorOf("newenvironment A\n\nenvmap no_such.exr\n").find("test.mtl:3: environment map"),
-              std::string::npos);
-    EXPECT_NE(mtlErrorOf("newenvironment A\nenvmap checker.png\n").find("test.mtl:2: environment map"),
-              std::string::npos);
-    EXPECT_NE(mtlErrorOf("newenvironment A\nenvmap env_marker.exr\nenvscale -1\n").find("test.mtl:3: envscale"),
-              std::string::npos);
-    EXPECT_NE(mtlErrorOf("newenvironment A\nenvmap env_marker.exr\nenvrotate x\n").find("test.mtl:3: envrotate"),
-              std::string::npos);
-    EXPECT_NE(mtlErrorOf("newenvironment\n").find("test.mtl:1: newenvironment: expected a name"), std::string::npos);
-}
 
 } // namespace
 } // namespace pt::test

@@ -1,4 +1,5 @@
 #include "scene/mtl_loader.h"
+#include "light/environment_map.h"
 #include "material/lab_bsdf.h"
 
 #include <gtest/gtest.h>
@@ -20,9 +21,9 @@ Parsed parse(const std::string& text, const std::string& path = "/nowhere/test.m
     return p;
 }
 
-std::string errorOf(const std::string& text) {
+std::string errorOf(const std::string& text, const std::string& path = "/nowhere/test.mtl") {
     try {
-        parse(text);
+        parse(text, path);
     } catch (const LoadError& e) {
         return e.what();
     }
@@ -183,6 +184,41 @@ TEST(Mtl, ErrorsNameFileLineAndExpectation) {
         std::string e = errorOf(c.text);
         EXPECT_NE(e.find(c.expected), std::string::npos) << "got: " << e << "\nfor: " << c.text;
     }
+}
+
+// The environment block: a scene can carry its lighting. The map files are the repository's own.
+const std::string kScenesMtl = PT_SOURCE_DIR "/scenes/test.mtl";
+
+TEST(EnvironmentMtl, BlockReadsTheMapBesideTheMtl) {
+    const Scene s = parse("newenvironment Sky\n\tEnvMap env_marker.exr\n\tenvrotate 90\n\tENVSCALE 2\nnewmtl A\n", kScenesMtl).scene;
+    ASSERT_TRUE(s.environment.map);
+    EXPECT_EQ(s.environment.map->width, 64);
+    EXPECT_NEAR(s.environment.map->rotation(), 0.5f * kPi, 1e-6f);
+    EXPECT_EQ(s.environment.map->scale, 2.0f);
+    // Turned by 90 degrees and doubled: what was along +x (green, 8) comes from -z.
+    const float lift = std::cos(kPi * 15.5f / 32.0f);
+    Spectrum L = s.environment.map->radiance(glm::normalize(Vec3(0, lift, -1)));
+    EXPECT_NEAR(L.y, 16.0f, 0.2f);
+    EXPECT_EQ(s.sources.back(), PT_SOURCE_DIR "/scenes/env_marker.exr");
+}
+
+TEST(EnvironmentMtl, ErrorsNameTheLine) {
+    EXPECT_NE(errorOf("envmap env_marker.exr\n", kScenesMtl).find("test.mtl:1: envmap outside a newenvironment block"),
+              std::string::npos);
+    EXPECT_NE(errorOf("newenvironment A\nenvmap env_marker.exr\nnewenvironment B\n", kScenesMtl)
+                  .find("test.mtl:3: newenvironment: the scene already has one (line 1)"),
+              std::string::npos);
+    EXPECT_NE(errorOf("newenvironment A\nenvrotate 10\n", kScenesMtl).find("test.mtl:1: newenvironment: the block has no envmap"),
+              std::string::npos);
+    EXPECT_NE(errorOf("newenvironment A\n\nenvmap no_such.exr\n", kScenesMtl).find("test.mtl:3: environment map"),
+              std::string::npos);
+    EXPECT_NE(errorOf("newenvironment A\nenvmap checker.png\n", kScenesMtl).find("test.mtl:2: environment map"),
+              std::string::npos);
+    EXPECT_NE(errorOf("newenvironment A\nenvmap env_marker.exr\nenvscale -1\n", kScenesMtl).find("test.mtl:3: envscale"),
+              std::string::npos);
+    EXPECT_NE(errorOf("newenvironment A\nenvmap env_marker.exr\nenvrotate x\n", kScenesMtl).find("test.mtl:3: envrotate"),
+              std::string::npos);
+    EXPECT_NE(errorOf("newenvironment\n", kScenesMtl).find("test.mtl:1: newenvironment: expected a name"), std::string::npos);
 }
 
 } // namespace

@@ -12,20 +12,6 @@
 namespace pt::test {
 namespace {
 
-std::string modeName(LightSampling m) {
-    return m == LightSampling::Mis ? "mis" : m == LightSampling::Nee ? "nee" : "bsdf";
-}
-
-Camera lookAt(Vec3 from, Vec3 to, Vec3 up, float fov) {
-    Camera c;
-    c.name = "test";
-    c.position = from;
-    c.target = to;
-    c.up = up;
-    c.fovY = fov;
-    return c;
-}
-
 // A convex Lambert object of albedo a under a constant environment E is a * E wherever it is
 // seen: every bounce ray escapes. With cosine sampling each sample is exactly a * E, so any
 // deviation is a bug (a self-hit from a bad ray offset, a wrong weight), not noise.

@@ -12,16 +12,6 @@
 namespace pt::test {
 namespace {
 
-Camera lookAt(Vec3 from, Vec3 to, float fov) {
-    Camera c;
-    c.name = "test";
-    c.position = from;
-    c.target = to;
-    c.up = Vec3(0, 1, 0);
-    c.fovY = fov;
-    return c;
-}
-
 // Materials whose every lobe is white: they absorb nothing at any angle.
 std::vector<std::pair<std::string, Material>> losslessMaterials() {
     std::vector<std::pair<std::string, Material>> out;

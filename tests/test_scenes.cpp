@@ -89,6 +89,22 @@ Image toImage(const Rendered& r) {
     return img;
 }
 
+Camera lookAt(Vec3 from, Vec3 to, Vec3 up, float fov) {
+    Camera c;
+    c.name = "test";
+    c.position = from;
+    c.target = to;
+    c.up = up;
+    c.fovY = fov;
+    return c;
+}
+
+Camera lookAt(Vec3 from, Vec3 to, float fov) { return lookAt(from, to, Vec3(0, 1, 0), fov); }
+
+std::string modeName(LightSampling m) {
+    return m == LightSampling::Mis ? "mis" : m == LightSampling::Nee ? "nee" : "bsdf";
+}
+
 Scene emptyScene(const Camera& camera) {
     Scene scene;
     scene.path = "(test)";

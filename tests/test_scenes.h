@@ -20,6 +20,12 @@ void addIcosphere(Scene& scene, Vec3 center, float radius, int subdivisions, uin
                   bool inward = false, bool smooth = false);
 // An axis-aligned box of six quads, normals facing out.
 void addBox(Scene& scene, Vec3 lo, Vec3 hi, uint32_t material);
+// A pinhole camera at `from` looking at `to`, vertical field of view `fov` degrees (up +y unless given).
+Camera lookAt(Vec3 from, Vec3 to, Vec3 up, float fov);
+Camera lookAt(Vec3 from, Vec3 to, float fov);
+// "mis", "nee" or "bsdf", as --light-sampling spells them.
+std::string modeName(LightSampling m);
+
 // Scene with one camera and a black environment.
 Scene emptyScene(const Camera& camera);
 

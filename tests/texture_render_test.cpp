@@ -7,16 +7,6 @@
 namespace pt::test {
 namespace {
 
-Camera lookAt(Vec3 from, Vec3 to, Vec3 up, float fov) {
-    Camera c;
-    c.name = "test";
-    c.position = from;
-    c.target = to;
-    c.up = up;
-    c.fovY = fov;
-    return c;
-}
-
 // A quad with uvs from uv0 to uv1 (a gets uv0, c gets uv1) and optionally one vertex normal.
 void addUvQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material, Vec2 uv0, Vec2 uv1,
                Vec3 normal = Vec3(0.0f)) {

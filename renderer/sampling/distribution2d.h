@@ -25,9 +25,6 @@ public:
         marginal_ = Distribution1D(rowWeights);
     }
 
-    bool empty() const { return rows_ == 0; }
-    double total() const { return marginal_.total(); }
-
     // A point of [0, 1)^2 for u in [0, 1)^2, and its density with respect to area on the square.
     Vec2 sample(Vec2 u, float& pdf) const {
         float pRow, pColumn, uRow, uColumn;
