@@ -113,6 +113,22 @@ Scene emptyScene(const Camera& camera) {
     return scene;
 }
 
+Scene groundScene() {
+    Scene scene = emptyScene(lookAt({0, 1.2f, 3.5f}, {0, 0.4f, 0}, 40));
+    Material ground, white, gloss;
+    ground.kd = Spectrum(0.5f);
+    white.kd = Spectrum(0.8f);
+    gloss.kd = Spectrum(0.0f);
+    gloss.ks = Spectrum(0.95f, 0.75f, 0.45f);
+    gloss.metallic = 1.0f;
+    gloss.roughness = 0.1f;
+    gloss.eta = 1.5f;
+    addQuad(scene, Vec3(-4, 0, 4), Vec3(4, 0, 4), Vec3(4, 0, -4), Vec3(-4, 0, -4), addMaterial(scene, ground));
+    addIcosphere(scene, Vec3(-0.55f, 0.5f, 0), 0.5f, 3, addMaterial(scene, white), false, true);
+    addIcosphere(scene, Vec3(0.55f, 0.5f, 0), 0.5f, 3, addMaterial(scene, gloss), false, true);
+    return scene;
+}
+
 Rendered render(const Scene& scene, int width, int height, uint32_t spp, const RenderSettings& settings, int threads) {
     Accel accel(scene, threads);
     RenderResult result = renderImage(scene, accel, scene.cameras[0], width, height, spp, threads, settings);

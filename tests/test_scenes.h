@@ -28,6 +28,9 @@ std::string modeName(LightSampling m);
 
 // Scene with one camera and a black environment.
 Scene emptyScene(const Camera& camera);
+// A small outdoor scene: a diffuse and a glossy sphere (GGX alpha 0.1 metal) on a ground plane,
+// for tests under environment lighting.
+Scene groundScene();
 
 struct Rendered {
     int width = 0, height = 0;

@@ -78,6 +78,17 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
             power.push_back(p);
         }
     }
+    if (const auto& sun = scene.environment.sun; sun && !isBlack(sun->radiance)) {
+        // As for the map: pi R^2 times the radiance integrated over the disk.
+        double radius = sceneBoundingRadius(scene);
+        sunEmitter_ = uint32_t(emitters_.size());
+        Emitter e{Emitter::Kind::Sun, 0};
+        e.center = sun->direction;
+        e.radius = sun->oneMinusCosRadius;
+        e.radiance = sun->radiance;
+        emitters_.push_back(e);
+        power.push_back(kPi * radius * radius * double(sun->solidAngle()) * double(average(sun->radiance)));
+    }
     distribution_ = Distribution1D(power);
 }
 
@@ -118,6 +129,14 @@ LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {
         s.distance = kInf;
         return s;
     }
+    if (e.kind == Emitter::Kind::Sun) {
+        s.wi = Frame(e.center).toWorld(squareToUniformCone(u, e.radius));
+        s.distance = kInf;
+        s.pdf = uniformConePdf(e.radius);
+        // A setting sun's lower part is behind the ground: no light, as a BSDF ray there sees none.
+        s.radiance = s.wi.y >= 0.0f ? e.radiance : Spectrum(0.0f);
+        return s;
+    }
     // Emissive triangle: uniform by area, converted to solid angle.
     const glm::uvec3& tri = scene_.triPositions[e.index];
     const Vec3 &a = scene_.positions[tri[0]], &b = scene_.positions[tri[1]], &c = scene_.positions[tri[2]];
@@ -145,6 +164,7 @@ float LightSet::pdf(size_t i, const Vec3& p, const Vec3& wi, float distance) con
     if (e.kind == Emitter::Kind::Point) return 0.0f;
     if (e.kind == Emitter::Kind::Sphere) return sphereCapPdf(sphereCap(p, e.center, e.radius));
     if (e.kind == Emitter::Kind::Environment) return environment_->pdf(wi);
+    if (e.kind == Emitter::Kind::Sun) return scene_.environment.sun->covers(wi) ? uniformConePdf(e.radius) : 0.0f;
     const glm::uvec3& tri = scene_.triPositions[e.index];
     const Vec3 &a = scene_.positions[tri[0]], &b = scene_.positions[tri[1]], &c = scene_.positions[tri[2]];
     Vec3 n = glm::cross(b - a, c - a);

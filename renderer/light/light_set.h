@@ -14,18 +14,18 @@
 namespace pt {
 
 struct Emitter {
-    enum class Kind : uint8_t { Sphere, Point, Triangle, Environment };
+    enum class Kind : uint8_t { Sphere, Point, Triangle, Environment, Sun };
     Kind kind;
     uint32_t index;    // into Scene::lights, or a triangle index
-    Vec3 center{0.0f}; // sphere and point lights
-    float radius = 0.0f;
-    Spectrum radiance{0.0f}; // sphere: I / (pi r^2); point: intensity I; triangle: Le; environment: unused
+    Vec3 center{0.0f}; // sphere and point lights; the sun: its direction
+    float radius = 0.0f; // sphere lights; the sun: 1 - cos of its angular radius
+    Spectrum radiance{0.0f}; // sphere: I / (pi r^2); point: intensity I; triangle: Le; sun: its disk's; environment: unused
 };
 
 // A point on a light seen from a shading point, with what a shadow ray needs to reach it.
 struct LightSample {
     Vec3 wi;              // unit direction from the shading point to the light
-    float distance = 0.0f; // to the sampled point (for spheres: to the sphere's surface; environment: inf)
+    float distance = 0.0f; // to the sampled point (for spheres: to the sphere's surface; environment, sun: inf)
     Spectrum radiance;    // emitted radiance towards the shading point; for point lights I / d^2
     float pdf = 0.0f;     // solid-angle density, emitter choice excluded; 0 means no sample
     bool delta = false;   // point light: cannot be hit by BSDF sampling
@@ -58,6 +58,8 @@ public:
     // Emitter index of the environment map, or ~0u when the environment is the lab's two tones
     // (not a light: BSDF sampling alone reaches it, as in the lab).
     uint32_t environmentEmitter() const { return environmentEmitter_; }
+    // Emitter index of the sun's disk, or ~0u without one.
+    uint32_t sunEmitter() const { return sunEmitter_; }
 
     // Samples a point on emitter i as seen from p.
     LightSample sample(size_t i, const Vec3& p, Vec2 u) const;
@@ -73,6 +75,7 @@ private:
     std::vector<uint32_t> triangleEmitter_; // empty unless the scene has emissive triangles
     std::unique_ptr<EnvironmentLight> environment_;
     uint32_t environmentEmitter_ = ~0u;
+    uint32_t sunEmitter_ = ~0u;
 };
 
 } // namespace pt

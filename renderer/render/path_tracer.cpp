@@ -47,7 +47,9 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
     for (int depth = 0;; ++depth) { // depth = scattering events so far
         Hit hit = accel_.intersect(ray, depth == 0);
         if (!hit.found()) {
-            L += beta * scene_.environment.radiance(ray.dir) * hitWeight(lights_.environmentEmitter(), kInf);
+            const Environment& env = scene_.environment;
+            L += beta * env.radiance(ray.dir) * hitWeight(lights_.environmentEmitter(), kInf);
+            if (env.sun && env.sun->covers(ray.dir)) L += beta * env.sun->radiance * hitWeight(lights_.sunEmitter(), kInf);
             break;
         }
         if (hit.onSphere) { // sphere lights emit and reflect nothing

@@ -4,10 +4,13 @@
 
 #include "core/math.h"
 #include "light/environment_map.h"
+#include "light/preetham_sky.h"
+#include "light/sun_disk.h"
 #include "texture/texture_cache.h"
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -72,10 +75,14 @@ struct Material {
 // Radiance seen by rays that leave the scene: an HDR map where one is given (it is then a light of
 // the light set, sampled by next-event estimation), else the lab's two tones, `sky` for
 // directions with y > 0 and `ground` below, reached by BSDF sampling only as the lab has it.
+// The Preetham sky is a map baked from the model (light/sky_environment.h) plus the sun's disk,
+// a light of its own; `preetham` keeps the parameters it was made from.
 struct Environment {
     Spectrum sky{0.5f, 0.6f, 0.7f};
     Spectrum ground{0.05f, 0.025f, 0.001f};
     std::shared_ptr<const EnvironmentMap> map;
+    std::optional<SunDisk> sun;
+    std::optional<SkyParameters> preetham;
 
     Spectrum radiance(const Vec3& dir) const {
         if (map) return map->radiance(dir);
