@@ -6,6 +6,7 @@
 #include "core/system.h"
 #include "io/output_file.h"
 #include "image/image_io.h"
+#include "light/sky_environment.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 
@@ -63,6 +64,15 @@ options (default in brackets):
                          either the lab's two-tone sky lights the scene [none]
   --env-rotate DEG       turn the map about +y by DEG degrees [0]
   --env-scale S          multiply the map's radiance by S [1]
+  --sky                  light the scene with the Preetham clear sky and the sun's disk
+                         (both importance-sampled; the ground below the horizon has
+                         albedo 0.2); it replaces the MTL's newenvironment [off]
+  --sun-elevation DEG    the sun's height above the horizon, -90 to 90 [45]
+  --sun-azimuth DEG      the sun's compass direction: 0 is -z (ahead of a camera looking
+                         down -z), 90 is +x [135]
+  --sun-dir X,Y,Z        the direction towards the sun, instead of the two angles
+  --turbidity T          haze, from 1.7 (very clear) to 10 (hazy) [3]
+  --sky-scale S          multiply the sky's, sun's and ground's radiance by S [1]
   --clamp X              scale down any sample whose largest channel exceeds X: fewer
                          fireflies, but biased (light is lost); 0 is off [0]
   -q, --quiet            print neither warnings nor progress (nor the libraries' own lines),
@@ -94,7 +104,26 @@ struct RenderArgs {
     std::string env;
     double envRotate = 0.0, envScale = 1.0;
     bool envRotateGiven = false, envScaleGiven = false;
+    bool sky = false;
+    SkyParameters skyParameters;
+    double sunElevation = 45.0, sunAzimuth = 135.0;
+    std::string skyOption; // the first sky option given, for "needs --sky" messages
+    bool sunAnglesGiven = false, sunDirGiven = false;
 };
+
+Vec3 parseDirection(const std::string& option, const std::string& v) {
+    double c[3];
+    char comma1 = 0, comma2 = 0, extra = 0;
+    std::istringstream in(v);
+    if (!(in >> c[0] >> comma1 >> c[1] >> comma2 >> c[2]) || comma1 != ',' || comma2 != ',' || (in >> extra))
+        throw UsageError("option --" + option + ": expected three numbers X,Y,Z such as 1,2,-1, got \"" + v + "\"");
+    for (double x : c)
+        if (!std::isfinite(x) || std::abs(x) > 1e30)
+            throw UsageError("option --" + option + ": " + v + " has a component that is not a finite number");
+    double length = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    if (!(length > 1e-20)) throw UsageError("option --" + option + ": " + v + " has no direction (zero length)");
+    return Vec3(float(c[0] / length), float(c[1] / length), float(c[2] / length));
+}
 
 void parseResolution(const std::string& v, int& w, int& h) {
     unsigned long long a = 0, b = 0;
@@ -170,6 +199,23 @@ RenderArgs parseArgs(int argc, char** argv) {
         } else if (opt == "env-scale") {
             r.envScale = args.number(opt, 0.0, 1e30);
             r.envScaleGiven = true;
+        } else if (opt == "sky") {
+            r.sky = true;
+        } else if (opt == "sun-elevation" || opt == "sun-azimuth") {
+            double& angle = opt == "sun-elevation" ? r.sunElevation : r.sunAzimuth;
+            angle = opt == "sun-elevation" ? args.number(opt, -90.0, 90.0) : args.number(opt, -36000.0, 36000.0);
+            r.sunAnglesGiven = true;
+            if (r.skyOption.empty()) r.skyOption = args.spelled(opt);
+        } else if (opt == "sun-dir") {
+            r.skyParameters.sunDirection = parseDirection(opt, args.value(opt));
+            r.sunDirGiven = true;
+            if (r.skyOption.empty()) r.skyOption = args.spelled(opt);
+        } else if (opt == "turbidity") {
+            r.skyParameters.turbidity = float(args.number(opt, kMinTurbidity, kMaxTurbidity));
+            if (r.skyOption.empty()) r.skyOption = args.spelled(opt);
+        } else if (opt == "sky-scale") {
+            r.skyParameters.scale = float(args.number(opt, 0.0, 1e30));
+            if (r.skyOption.empty()) r.skyOption = args.spelled(opt);
         } else if (opt == "q" || opt == "quiet") {
             r.quiet = true;
         } else {
@@ -181,6 +227,11 @@ RenderArgs parseArgs(int argc, char** argv) {
     r.scene = positional[0];
     if ((r.envRotateGiven || r.envScaleGiven) && r.env.empty())
         throw UsageError(std::string(r.envRotateGiven ? "--env-rotate" : "--env-scale") + " needs --env PATH");
+    if (!r.skyOption.empty() && !r.sky) throw UsageError(r.skyOption + " needs --sky");
+    if (r.sky && !r.env.empty()) throw UsageError("--sky and --env both set the environment; give one of them");
+    if (r.sunAnglesGiven && r.sunDirGiven)
+        throw UsageError("--sun-dir and --sun-elevation/--sun-azimuth both place the sun; give one or the other");
+    if (!r.sunDirGiven) r.skyParameters.sunDirection = sunDirectionFromAngles(r.sunElevation, r.sunAzimuth);
     bool anyAov = r.aovVariance || r.aovAlbedo || r.aovNormal || r.aovDepth;
     if (anyAov && formatFromPath(r.output) != ImageFormat::Exr)
         throw UsageError("--aov needs an .exr output; \"" + r.output + "\" cannot hold extra layers");
@@ -316,7 +367,15 @@ void addMetadata(Image& image, const RenderArgs& args, const Scene& scene, const
     text("pt:scene", args.scene);
     text("pt:sceneResolved", ec ? args.scene : resolved);
     text("pt:camera", camera);
-    if (const auto& map = scene.environment.map) { // from --env or the MTL
+    if (const auto& sky = scene.environment.preetham) { // from --sky or the MTL
+        const Vec3& d = sky->sunDirection;
+        text("pt:environment", "preetham");
+        text("pt:sunDirection", shortNumber(d.x) + "," + shortNumber(d.y) + "," + shortNumber(d.z));
+        real("pt:sunElevation", sunElevationDegrees(d));
+        real("pt:sunAzimuth", sunAzimuthDegrees(d));
+        real("pt:turbidity", sky->turbidity);
+        real("pt:skyScale", sky->scale);
+    } else if (const auto& map = scene.environment.map) { // from --env or the MTL
         text("pt:env", map->path);
         real("pt:envRotate", double(map->rotation()) * 180.0 / kPi);
         real("pt:envScale", map->scale);
@@ -386,6 +445,12 @@ int renderCommand(int argc, char** argv) {
             std::fprintf(err, "pt: error: %s: out of memory while reading the environment map\n", args.env.c_str());
             return 1;
         }
+    }
+    if (args.sky) {
+        scene.environment = skyEnvironment(args.skyParameters);
+        if (args.skyParameters.sunDirection.y < 0.0f)
+            warnings.add("the sun is below the horizon: the model has no twilight, so the sky is that of a sun on the "
+                         "horizon and the sun's disk is hidden");
     }
     double loadSeconds = secondsSince(t0);
 

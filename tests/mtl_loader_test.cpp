@@ -208,7 +208,7 @@ TEST(EnvironmentMtl, ErrorsNameTheLine) {
     EXPECT_NE(errorOf("newenvironment A\nenvmap env_marker.exr\nnewenvironment B\n", kScenesMtl)
                   .find("test.mtl:3: newenvironment: the scene already has one (line 1)"),
               std::string::npos);
-    EXPECT_NE(errorOf("newenvironment A\nenvrotate 10\n", kScenesMtl).find("test.mtl:1: newenvironment: the block has no envmap"),
+    EXPECT_NE(errorOf("newenvironment A\nenvrotate 10\n", kScenesMtl).find("test.mtl:1: newenvironment: the block has neither an envmap"),
               std::string::npos);
     EXPECT_NE(errorOf("newenvironment A\n\nenvmap no_such.exr\n", kScenesMtl).find("test.mtl:3: environment map"),
               std::string::npos);
@@ -219,6 +219,55 @@ TEST(EnvironmentMtl, ErrorsNameTheLine) {
     EXPECT_NE(errorOf("newenvironment A\nenvmap env_marker.exr\nenvrotate x\n", kScenesMtl).find("test.mtl:3: envrotate"),
               std::string::npos);
     EXPECT_NE(errorOf("newenvironment\n", kScenesMtl).find("test.mtl:1: newenvironment: expected a name"), std::string::npos);
+}
+
+TEST(EnvironmentMtl, SkyBlockSetsTheSunAndHaze) {
+    const Scene s =
+        parse("newenvironment Day\n\tEnvSky\n\tSUNELEVATION 30\n\tsunazimuth 90\n\tturbidity 4\n\tskyscale 2\nnewmtl A\n",
+              kScenesMtl).scene;
+    ASSERT_TRUE(s.environment.preetham);
+    ASSERT_TRUE(s.environment.map);
+    ASSERT_TRUE(s.environment.sun);
+    const SkyParameters& p = *s.environment.preetham;
+    // Elevation 30, azimuth 90: towards +x, raised by 30 degrees.
+    EXPECT_NEAR(p.sunDirection.x, std::cos(kPi / 6.0f), 1e-6f);
+    EXPECT_NEAR(p.sunDirection.y, 0.5f, 1e-6f);
+    EXPECT_NEAR(p.sunDirection.z, 0.0f, 1e-6f);
+    EXPECT_EQ(p.turbidity, 4.0f);
+    EXPECT_EQ(p.scale, 2.0f);
+    EXPECT_EQ(s.environment.sun->direction, p.sunDirection);
+
+    const Scene d = parse("newenvironment Day\nenvsky\nsundir 0 2 -2\n", kScenesMtl).scene;
+    ASSERT_TRUE(d.environment.preetham);
+    EXPECT_NEAR(d.environment.preetham->sunDirection.y, std::sqrt(0.5f), 1e-6f);
+    EXPECT_NEAR(d.environment.preetham->sunDirection.z, -std::sqrt(0.5f), 1e-6f);
+    EXPECT_EQ(d.environment.preetham->turbidity, 3.0f); // the default
+}
+
+TEST(EnvironmentMtl, SkyErrorsNameTheLine) {
+    struct Case {
+        const char* text;
+        const char* expected;
+    } cases[] = {
+        {"newenvironment A\nenvsky\nenvmap env_marker.exr\n", "test.mtl:3: envmap: the block is already the sky (envsky, line 2)"},
+        {"newenvironment A\nenvsky\nenvrotate 10\n", "test.mtl:3: envrotate applies to an envmap"},
+        {"newenvironment A\nenvsky\nsundir 0 1 0\nsunelevation 20\n", "test.mtl:4: sundir and sunelevation/sunazimuth"},
+        {"newenvironment A\nenvmap env_marker.exr\nturbidity 3\n", "test.mtl:3: turbidity: applies to the sky"},
+        {"newenvironment A\nsunelevation 10\n", "test.mtl:2: sunelevation: applies to the sky; the block needs an envsky line"},
+        {"newenvironment A\nenvsky\nturbidity 1.5\n", "test.mtl:3: turbidity: expected a value in [1.7, 10]"},
+        {"newenvironment A\nenvsky\nturbidity nan\n", "test.mtl:3: turbidity"},
+        {"newenvironment A\nenvsky\nsunelevation 91\n", "test.mtl:3: sunelevation: expected degrees in [-90, 90]"},
+        {"newenvironment A\nenvsky\nsundir 0 0 0\n", "test.mtl:3: sundir: expected a direction"},
+        {"newenvironment A\nenvsky\nsundir 0 1\n", "test.mtl:3: sundir"},
+        {"newenvironment A\nenvsky\nskyscale -2\n", "test.mtl:3: skyscale: expected a value >= 0"},
+        {"newenvironment A\nenvsky 3\n", "test.mtl:2: envsky"},
+        {"envsky\n", "test.mtl:1: envsky outside a newenvironment block"},
+        {"newenvironment A\n", "test.mtl:1: newenvironment: the block has neither an envmap line"},
+    };
+    for (const Case& c : cases) {
+        std::string e = errorOf(c.text, kScenesMtl);
+        EXPECT_NE(e.find(c.expected), std::string::npos) << "got: " << e << "\nfor: " << c.text;
+    }
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "scene/mtl_loader.h"
 
 #include "light/environment_map.h"
+#include "light/sky_environment.h"
 #include "texture/texture_io.h"
 #include "scene/text_parser.h"
 
@@ -31,11 +32,19 @@ struct PendingLight {
     float intensity = 1.0f;
 };
 
-// An environment block: a map file and how to turn and scale it, read when the block ends.
+// An environment block, read when the block ends: a map file and how to turn and scale it, or
+// the Preetham sky (envsky) with its sun and haze.
 struct PendingEnvironment {
     std::string file;         // resolved against the MTL's folder
     size_t fileLine = 0;
     float rotate = 0.0f, scale = 1.0f;
+    size_t rotateLine = 0, scaleLine = 0;
+    size_t skyLine = 0;       // of envsky
+    size_t firstSkyKeywordLine = 0;
+    std::string firstSkyKeyword;
+    SkyParameters sky;
+    float sunElevation = 45.0f, sunAzimuth = 135.0f;
+    size_t sunAnglesLine = 0, sunDirLine = 0;
 };
 
 // Lines of a camera block's keywords, so an error points at the value that is wrong.
@@ -280,8 +289,30 @@ void MtlParser::finishBlock() {
     }
     case Block::Camera: finishCamera(); break;
     case Block::Environment: {
+        PendingEnvironment& e = environment;
+        if (e.skyLine) {
+            if (!e.file.empty())
+                throw LoadError(path, e.fileLine, "envmap: the block is already the sky (envsky, line " +
+                                                      std::to_string(e.skyLine) + "); give one of them");
+            if (e.rotateLine || e.scaleLine)
+                throw LoadError(path, e.rotateLine ? e.rotateLine : e.scaleLine,
+                                std::string(e.rotateLine ? "envrotate" : "envscale") +
+                                    " applies to an envmap; the sky takes sunazimuth and skyscale");
+            if (e.sunDirLine && e.sunAnglesLine)
+                throw LoadError(path, std::max(e.sunDirLine, e.sunAnglesLine),
+                                "sundir and sunelevation/sunazimuth both place the sun; give one or the other");
+            if (!e.sunDirLine) e.sky.sunDirection = sunDirectionFromAngles(e.sunElevation, e.sunAzimuth);
+            scene.environment = skyEnvironment(e.sky);
+            if (e.sky.sunDirection.y < 0.0f)
+                warnings.add(path + ":" + std::to_string(e.sunDirLine ? e.sunDirLine : e.sunAnglesLine) +
+                             ": the sun is below the horizon: the model has no twilight, so the sky is that of a "
+                             "sun on the horizon and the sun's disk is hidden");
+            break;
+        }
+        if (e.firstSkyKeywordLine)
+            throw LoadError(path, e.firstSkyKeywordLine, e.firstSkyKeyword + ": applies to the sky; the block needs an envsky line");
         if (environment.file.empty())
-            throw LoadError(path, blockLine, "newenvironment: the block has no envmap line naming its map");
+            throw LoadError(path, blockLine, "newenvironment: the block has neither an envmap line naming its map nor envsky");
         std::string warning;
         try {
             scene.environment.map = std::make_shared<const EnvironmentMap>(
@@ -440,9 +471,41 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
         requireBlock(Block::Environment, keyword, t);
         environment.rotate = t.number(keyword);
         if (!(std::abs(environment.rotate) <= 36000.0f)) t.fail("envrotate: expected degrees in [-36000, 36000]");
+        environment.rotateLine = lines.lineNumber();
     } else if (is("envscale")) {
         requireBlock(Block::Environment, keyword, t);
         environment.scale = nonNegative(t, keyword);
+        environment.scaleLine = lines.lineNumber();
+    } else if (is("envsky")) {
+        requireBlock(Block::Environment, keyword, t);
+        environment.skyLine = lines.lineNumber();
+    } else if (is("sunelevation") || is("sunazimuth") || is("sundir") || is("turbidity") || is("skyscale")) {
+        requireBlock(Block::Environment, keyword, t);
+        PendingEnvironment& e = environment;
+        std::string name = toLower(keyword);
+        if (!e.firstSkyKeywordLine) e.firstSkyKeywordLine = lines.lineNumber(), e.firstSkyKeyword = name;
+        if (name == "sunelevation") {
+            e.sunElevation = t.number(keyword);
+            if (!(std::abs(e.sunElevation) <= 90.0f)) t.fail("sunelevation: expected degrees in [-90, 90]");
+            e.sunAnglesLine = lines.lineNumber();
+        } else if (name == "sunazimuth") {
+            e.sunAzimuth = t.number(keyword);
+            if (!(std::abs(e.sunAzimuth) <= 36000.0f)) t.fail("sunazimuth: expected degrees in [-36000, 36000]");
+            e.sunAnglesLine = lines.lineNumber();
+        } else if (name == "sundir") {
+            Vec3 d = t.vec3(keyword);
+            float length = safeLength(d);
+            if (!(length > 0.0f) || !std::isfinite(length)) t.fail("sundir: expected a direction X Y Z of non-zero length");
+            e.sky.sunDirection = safeNormalize(d);
+            e.sunDirLine = lines.lineNumber();
+        } else if (name == "turbidity") {
+            e.sky.turbidity = t.number(keyword);
+            if (!(e.sky.turbidity >= kMinTurbidity && e.sky.turbidity <= kMaxTurbidity))
+                t.fail("turbidity: expected a value in [1.7, 10] (1.7 very clear, 10 hazy), found " +
+                       shortNumber(e.sky.turbidity));
+        } else {
+            e.sky.scale = nonNegative(t, keyword);
+        }
     }
     // Cameras.
     else if (is("cameraposition")) {
