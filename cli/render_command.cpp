@@ -119,7 +119,7 @@ Vec3 parseDirection(const std::string& option, const std::string& v) {
         throw UsageError("option --" + option + ": expected three numbers X,Y,Z such as 1,2,-1, got \"" + v + "\"");
     for (double x : c)
         if (!std::isfinite(x) || std::abs(x) > 1e30)
-            throw UsageError("option --" + option + ": " + v + " has a component that is not a finite number");
+            throw UsageError("option --" + option + ": " + v + " has a component that is not a number of magnitude below 1e30");
     double length = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
     if (!(length > 1e-20)) throw UsageError("option --" + option + ": " + v + " has no direction (zero length)");
     return Vec3(float(c[0] / length), float(c[1] / length), float(c[2] / length));

@@ -249,6 +249,23 @@ check env_not_2_to_1 0 'is 8x8, not twice as wide as high' render m.obj --env sq
 check env_rotate_alone 2 '--env-rotate needs --env PATH' render m.obj --env-rotate 30 -o out/a.exr
 check env_scale_negative 2 'option --env-scale: -1 is out of range' render m.obj --env square_env.exr --env-scale -1 -o out/a.exr
 check env_is_output 2 'square_env.exr' render m.obj --env square_env.exr -spp 1 -o square_env.exr
+
+# The sky (--sky): each bad value is a usage error naming the option, nothing written.
+check sky_option_alone 2 '--turbidity needs --sky' render m.obj --turbidity 4 -o out/a.exr
+check sky_and_env 2 '--sky and --env both set the environment' render m.obj --sky --env square_env.exr -o out/a.exr
+check sky_sun_twice 2 '--sun-dir and --sun-elevation/--sun-azimuth both place the sun' render m.obj --sky --sun-dir 0,1,0 --sun-elevation 30 -o out/a.exr
+check sky_turbidity_low 2 'option --turbidity: 1.2 is out of range [1.7, 10]' render m.obj --sky --turbidity 1.2 -o out/a.exr
+check sky_turbidity_nan 2 'option --turbidity' render m.obj --sky --turbidity nan -o out/a.exr
+check sky_elevation_range 2 'option --sun-elevation: 95 is out of range [-90, 90]' render m.obj --sky --sun-elevation 95 -o out/a.exr
+check sky_sun_dir_zero 2 'option --sun-dir: 0,0,0 has no direction' render m.obj --sky --sun-dir 0,0,0 -o out/a.exr
+check sky_sun_dir_form 2 'option --sun-dir: expected three numbers X,Y,Z' render m.obj --sky --sun-dir 1,2 -o out/a.exr
+check sky_sun_dir_huge 2 'option --sun-dir: 1,1e40,0 has a component that is not a number of magnitude below 1e30' render m.obj --sky --sun-dir 1,1e40,0
+check sky_sun_dir_inf 2 'option --sun-dir: expected three numbers' render m.obj --sky --sun-dir 1,inf,0 -o out/a.exr
+check sky_scale_negative 2 'option --sky-scale: -1 is out of range' render m.obj --sky --sky-scale -1 -o out/a.exr
+check sky_sun_below 0 'the sun is below the horizon' render m.obj --sky --sun-elevation -10 -spp 1 --res 8x8 -o out/a.exr
+printf 'mtllib sky.mtl\n%s' "$tri" > skyblock.obj
+printf 'newenvironment Day\nenvsky\nturbidity 12\n' > sky.mtl
+check sky_mtl_turbidity 1 'sky.mtl:3: turbidity: expected a value in [1.7, 10]' render skyblock.obj -spp 1 --res 8x8 -o out/a.exr
 "$pt" render m.obj --threads 4096 -spp 1 --res 8x8 -o threads.exr > /dev/null 2>&1
 oiiotool --info -v threads.exr | grep -q "pt:threads: $(nproc)$" || fail "threads_beyond_cores: pt:threads is not $(nproc)"
 oiiotool --info -v threads.exr | grep -q "pt:threadsRequested: 4096" || fail "threads_beyond_cores: pt:threadsRequested is not recorded"

@@ -47,6 +47,11 @@ for c in R G B variance.R albedo.G normal.Z depth.Z; do
   [[ "$channels" == *"$c"* ]] || { echo "FAIL: $c missing from $channels"; failures=$((failures + 1)); }
 done
 expect 0 "16x16, 4 spp" "$pt" render "$scene" -spp 4 --res 16x16 --camera Front -o "$tmp/a.png"
+expect 0 "8x8, 2 spp" "$pt" render "$scene" -spp 2 --res 8x8 --sky --sun-elevation 30 --sun-azimuth 250 --turbidity 4.5 --sky-scale 0.5 -o "$tmp/sky.exr"
+info=$(oiiotool --info -v "$tmp/sky.exr")
+for attr in 'pt:environment: "preetham"' 'pt:sunElevation: 30' 'pt:sunAzimuth: 250' 'pt:turbidity: 4.5' 'pt:skyScale: 0.5'; do
+  [[ "$info" == *"$attr"* ]] || { echo "FAIL: $attr missing from the sky render's metadata"; failures=$((failures + 1)); }
+done
 
 expect 0 "the images agree" "$pt" diff "$tmp/a.exr" "$tmp/a.exr" --heatmap "$tmp/heat.png" --json "$tmp/d.json"
 [[ -s "$tmp/heat.png" && -s "$tmp/d.json" ]] || { echo "FAIL: heatmap or JSON missing"; failures=$((failures + 1)); }
