@@ -271,6 +271,7 @@ int usage(int status) {
                "                [--embree-configs]   (also compare Embree's build options on the recorded rays)\n"
                "       pt-bench converge --help\n"
                "       pt-bench textures [--rounds R] [--size N]   (cost of a texture lookup)\n"
+               "       pt-bench sky [--rounds R]   (the baked sky map against the analytic model)\n"
                "defaults: cornellbottle2 from ../shared/scenes/lab, 20 frames, 512x512, all threads,\n"
                "          JSON to bench/results/latest.json\n",
                status == 0 ? stdout : stderr);
@@ -284,6 +285,7 @@ int main(int argc, char** argv) {
     using namespace pt::bench;
     if (argc > 1 && !std::strcmp(argv[1], "converge")) return runConverge(argc - 1, argv + 1);
     if (argc > 1 && !std::strcmp(argv[1], "textures")) return runTextureBench(argc - 1, argv + 1);
+    if (argc > 1 && !std::strcmp(argv[1], "sky")) return runSkyBench(argc - 1, argv + 1);
     Options o;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];

@@ -43,7 +43,8 @@ outdoor:     objects on a large ground plane with no light of their own, lit by 
              (pt render scenes/outdoor.obj --env scenes/env_sun.exr): from the left a white
              Lambert sphere, a rough gold sphere (Pm 1, alpha 0.05), a glass sphere and a
              red rough plastic box.
-sunlit:      outdoor without the glass sphere, for the convergence study: a sun seen through glass
+sunlit:      outdoor without the glass sphere, lit by its MTL's Preetham sky (an envsky block, sun 30
+             degrees high), for the convergence study: a sun seen through glass
              is a caustic that only BSDF sampling finds, and its fireflies would swamp the
              difference that importance sampling the map makes on the other objects.
 env_sun.exr: a 256x128 lat-long sky: a gradient from blue at the zenith to pale at the horizon,
@@ -473,7 +474,7 @@ def env_probe():
         f.write("newmtl Mirror\n\tKd 0 0 0\n\tKs 1 1 1\n\treflat0deg 1.0\n\treflat90deg 1.0\n")
 
 
-def outdoor(name="outdoor", glass=True):
+def outdoor(name="outdoor", glass=True, sky=None):
     o = Obj()
     o.use("Ground")
     o.quad((-30, 0, 30), (30, 0, 30), (30, 0, -30), (-30, 0, -30))
@@ -489,7 +490,11 @@ def outdoor(name="outdoor", glass=True):
     o.write(os.path.join(HERE, name + ".obj"), name + ".mtl",
             "Objects on a ground plane, no lights: render with --env (scenes/env_sun.exr) or the lab sky")
     with open(os.path.join(HERE, name + ".mtl"), "w") as f:
-        f.write("# No light sources: an environment map lights the scene (pt render --env).\n\n")
+        if sky:
+            f.write("# No light sources: the Preetham sky and its sun light the scene (--env or --sky replace it).\n\n")
+            f.write("newenvironment Afternoon\n\tenvsky\n" + "".join("\t%s %s\n" % kv for kv in sky) + "\n")
+        else:
+            f.write("# No light sources: an environment map lights the scene (pt render --env).\n\n")
         f.write("newcamera Front\n\tcameraposition 0.0 1.6 5.5\n\tcameratarget 0.2 0.4 0.0\n"
                 "\tcameraup 0.0 1.0 0.0\n\tcamerafov 40.0\n\n")
         f.write("newmtl Ground\n\tKd 0.5 0.5 0.5\n\n")
@@ -509,4 +514,4 @@ if __name__ == "__main__":
     env_maps()
     env_probe()
     outdoor()
-    outdoor("sunlit", glass=False)
+    outdoor("sunlit", glass=False, sky=(("sunelevation", 30), ("sunazimuth", 220), ("turbidity", 3)))

@@ -232,7 +232,9 @@ def build(scene_path, camera_index, width, height, max_depth):
     scene.view_settings.view_transform = "Standard"
 
     mtllib, groups = parse_obj(scene_path)
-    materials, lights, cameras = parse_mtl(mtllib)
+    materials, lights, cameras, environment = parse_mtl(mtllib)
+    if environment:
+        fail("the Cycles check models only the lab's two-tone sky, not an MTL environment block")
     for k, (name, (pos, nrm, uv)) in enumerate(groups.items()):
         m = materials.get(name) or fail(f"usemtl {name!r} names no material")
         add_mesh(f"group{k}", pos, uv, lab_material(name, m))

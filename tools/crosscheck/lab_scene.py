@@ -85,7 +85,10 @@ def parse_map(line, key, where, mtl_dir):
 
 # ---------------------------------------------------------------- scene text
 def parse_mtl(path):
+    """Materials, lights, cameras, and the environment block (None, or a dict with "envmap" or
+    "sky": the Preetham sky's sun direction, turbidity and scale, as issue 12 defines them)."""
     materials, lights, cameras = {}, [], []
+    environment = None
     cur = None
     for lineno, raw in enumerate(open(path, encoding="utf-8", errors="replace"), 1):
         line = raw.split("#", 1)[0]
@@ -140,6 +143,19 @@ def parse_mtl(path):
             cur[key[6:]] = num()
         elif key == "camerafov":
             cur["fov"] = num()[0]
+        elif key == "newenvironment":
+            cur = environment = {"elevation": 45.0, "azimuth": 135.0, "dir": None, "turbidity": 3.0, "scale": 1.0,
+                                 "sky": False, "envmap": None, "rotate": 0.0, "envscale": 1.0}
+        elif key == "envsky":
+            cur["sky"] = True
+        elif key == "envmap":
+            cur["envmap"] = os.path.join(os.path.dirname(path), line.split(None, 1)[1].strip())
+        elif key in ("envrotate", "envscale"):
+            cur["rotate" if key == "envrotate" else "envscale"] = num()[0]
+        elif key in ("sunelevation", "sunazimuth", "turbidity", "skyscale"):
+            cur[{"sunelevation": "elevation", "sunazimuth": "azimuth", "skyscale": "scale"}.get(key, key)] = num()[0]
+        elif key == "sundir":
+            cur["dir"] = num()
         else:
             fail(f"{path}:{lineno}: keyword {t[0]!r} is outside what this check models")
     for name, m in materials.items():
@@ -155,7 +171,13 @@ def parse_mtl(path):
             print(f"crosscheck: material {name!r}: norm and bump; norm wins, bump is ignored (as in pt)",
                   file=sys.stderr)
             del m["maps"]["bump"]
-    return materials, lights, cameras
+    return materials, lights, cameras, environment
+
+
+def sun_direction(elevation, azimuth):
+    """Towards the sun: azimuth 0 is -z, 90 is +x (clockwise seen from above), as pt's --sky."""
+    e, a = np.radians(elevation), np.radians(azimuth)
+    return np.array([np.sin(a) * np.cos(e), np.sin(e), -np.cos(a) * np.cos(e)])
 
 
 def pm_rule(m):

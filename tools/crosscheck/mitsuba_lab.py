@@ -29,6 +29,11 @@ its first and last rows on the poles, so it gets 2H + 1 rows resampled from pt's
 interpolant at v = r / 2H: between those rows pt's interpolant is linear, so both renderers see
 the same radiance in every direction.
 
+The Preetham sky (--sky, or an envsky block, issue 12) comes from preetham.py, an implementation
+of the paper written for this check: the sky and ground evaluated at each texel of a tall map in
+the same layout, and the sun a distant `disk` shape 1e4 away with an `area` emitter, of radius
+1e4 tan(r), so that it subtends pt's cone of angular radius r from the scene.
+
 The image is the mean of PASSES independent renders; the spread between passes gives the
 variance of that mean, written as the `variance` layer pt diff reads. Run it with
 tools/crosscheck/run, which installs Mitsuba into a virtual environment.
@@ -46,7 +51,8 @@ import mitsuba as mi
 
 sys.path.insert(0, os.path.dirname(__file__))
 from exr import write_mean_of_passes  # noqa: E402
-from lab_scene import GROUND, SKY, fail, parse_mtl, parse_obj, write_ply  # noqa: E402
+from lab_scene import GROUND, SKY, fail, parse_mtl, parse_obj, sun_direction, write_ply  # noqa: E402
+import preetham  # noqa: E402
 
 import OpenImageIO as oiio  # noqa: E402  (Debian's, through the venv's system site packages)
 
@@ -437,9 +443,32 @@ def environment_map(path, rotate, scale):
             "to_world": mi.ScalarTransform4f().rotate([0, 1, 0], 90.0 + rotate)}
 
 
-def build_scene(obj_path, camera_index, width, height, max_depth, pt_normals, tmp, rr_depth=5, env=None):
+def preetham_sky(sun_dir, turbidity, scale, rows=2049, columns=1024):
+    """The emitters of pt --sky: a map of sky and ground (pt's layout, Mitsuba's pole rows), and the
+    sun's disk as a distant emissive disk."""
+    sky = preetham.Sky(sun_dir, turbidity, scale)
+    theta = np.pi * np.arange(rows) / (rows - 1)
+    phi = 2 * np.pi * ((np.arange(columns) + 0.5) / columns - 0.5)
+    T, P = np.meshgrid(theta, phi, indexing="ij")
+    d = np.stack([np.sin(T) * np.cos(P), np.cos(T), np.sin(T) * np.sin(P)], axis=-1)
+    emitters = {"env": {"type": "envmap", "bitmap": mi.Bitmap(np.ascontiguousarray(sky.radiance(d), dtype=np.float32)),
+                        "to_world": mi.ScalarTransform4f().rotate([0, 1, 0], 90.0)}}
+    if sky.sun_radiance.max() > 0:
+        if sky.sun[1] < math.sin(preetham.SUN_RADIUS):
+            fail("a sun that touches the horizon is cut by pt's ground; this check models a sun above it")
+        distance = 1e4
+        up = [0, 0, 1] if abs(sky.sun[1]) > 0.9 else [0, 1, 0]
+        to_world = mi.ScalarTransform4f().look_at(origin=(distance * sky.sun).tolist(), target=[0, 0, 0], up=up)
+        r = distance * math.tan(preetham.SUN_RADIUS)
+        emitters["sun"] = {"type": "disk", "to_world": to_world @ mi.ScalarTransform4f().scale([r, r, 1]),
+                           "emitter": {"type": "area", "radiance": {"type": "rgb", "value": sky.sun_radiance.tolist()}},
+                           "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb", "value": [0, 0, 0]}}}
+    return emitters
+
+
+def build_scene(obj_path, camera_index, width, height, max_depth, pt_normals, tmp, rr_depth=5, env=None, sky=None):
     mtllib, groups = parse_obj(obj_path)
-    materials, lights, cameras = parse_mtl(mtllib)
+    materials, lights, cameras, environment = parse_mtl(mtllib)
     if not cameras:
         fail("the scene has no camera")
     cam = cameras[camera_index]
@@ -468,8 +497,16 @@ def build_scene(obj_path, camera_index, width, height, max_depth, pt_normals, tm
     sky[: rows // 2] = SKY
     sky[rows // 2:] = GROUND
     scene["env"] = {"type": "envmap", "bitmap": mi.Bitmap(sky)}
+    if environment and not env and not sky:  # the MTL's block, unless the command line replaces it
+        if environment["sky"]:
+            e = environment
+            sky = (e["dir"] if e["dir"] else sun_direction(e["elevation"], e["azimuth"]), e["turbidity"], e["scale"])
+        else:
+            env = (environment["envmap"], environment["rotate"], environment["envscale"])
     if env:
         scene["env"] = environment_map(*env)
+    if sky:
+        scene.update(preetham_sky(*sky))
     for i, light in enumerate(lights):
         intensity = [c * light["intensity"] for c in light["color"]]
         if light["radius"] > 0:
@@ -506,6 +543,11 @@ def main():
     ap.add_argument("--env", help="an environment map, as pt render --env")
     ap.add_argument("--env-rotate", type=float, default=0.0)
     ap.add_argument("--env-scale", type=float, default=1.0)
+    ap.add_argument("--sky", action="store_true", help="the Preetham sky and sun, as pt render --sky")
+    ap.add_argument("--sun-elevation", type=float, default=45.0)
+    ap.add_argument("--sun-azimuth", type=float, default=135.0)
+    ap.add_argument("--turbidity", type=float, default=3.0)
+    ap.add_argument("--sky-scale", type=float, default=1.0)
     ap.add_argument("--bench", type=int, default=0, metavar="K",
                     help="instead: time K frames of --spp after one warm-up frame (which compiles the kernel)")
     a = ap.parse_args()
@@ -513,7 +555,8 @@ def main():
     import time
     with tempfile.TemporaryDirectory() as tmp:
         env = (a.env, a.env_rotate, a.env_scale) if a.env else None
-        scene = build_scene(a.scene, a.camera, width, height, a.max_depth, a.pt_normals, tmp, a.rr_depth, env)
+        sky = (sun_direction(a.sun_elevation, a.sun_azimuth), a.turbidity, a.sky_scale) if a.sky else None
+        scene = build_scene(a.scene, a.camera, width, height, a.max_depth, a.pt_normals, tmp, a.rr_depth, env, sky)
         if a.bench:
             times = []
             for k in range(a.bench + 1):
