@@ -367,7 +367,8 @@ void addMetadata(Image& image, const RenderArgs& args, const Scene& scene, const
     text("pt:scene", args.scene);
     text("pt:sceneResolved", ec ? args.scene : resolved);
     text("pt:camera", camera);
-    if (const auto& sky = scene.environment.preetham) { // from --sky or the MTL
+    if (const auto& preetham = scene.environment.preetham) { // from --sky or the MTL
+        const SkyParameters* sky = &preetham->parameters();
         const Vec3& d = sky->sunDirection;
         text("pt:environment", "preetham");
         text("pt:sunDirection", shortNumber(d.x) + "," + shortNumber(d.y) + "," + shortNumber(d.z));

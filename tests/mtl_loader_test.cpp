@@ -228,7 +228,7 @@ TEST(EnvironmentMtl, SkyBlockSetsTheSunAndHaze) {
     ASSERT_TRUE(s.environment.preetham);
     ASSERT_TRUE(s.environment.map);
     ASSERT_TRUE(s.environment.sun);
-    const SkyParameters& p = *s.environment.preetham;
+    const SkyParameters& p = s.environment.preetham->parameters();
     // Elevation 30, azimuth 90: towards +x, raised by 30 degrees.
     EXPECT_NEAR(p.sunDirection.x, std::cos(kPi / 6.0f), 1e-6f);
     EXPECT_NEAR(p.sunDirection.y, 0.5f, 1e-6f);
@@ -239,9 +239,9 @@ TEST(EnvironmentMtl, SkyBlockSetsTheSunAndHaze) {
 
     const Scene d = parse("newenvironment Day\nenvsky\nsundir 0 2 -2\n", kScenesMtl).scene;
     ASSERT_TRUE(d.environment.preetham);
-    EXPECT_NEAR(d.environment.preetham->sunDirection.y, std::sqrt(0.5f), 1e-6f);
-    EXPECT_NEAR(d.environment.preetham->sunDirection.z, -std::sqrt(0.5f), 1e-6f);
-    EXPECT_EQ(d.environment.preetham->turbidity, 3.0f); // the default
+    EXPECT_NEAR(d.environment.preetham->parameters().sunDirection.y, std::sqrt(0.5f), 1e-6f);
+    EXPECT_NEAR(d.environment.preetham->parameters().sunDirection.z, -std::sqrt(0.5f), 1e-6f);
+    EXPECT_EQ(d.environment.preetham->parameters().turbidity, 3.0f); // the default
 }
 
 TEST(EnvironmentMtl, SkyErrorsNameTheLine) {

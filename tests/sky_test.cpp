@@ -288,8 +288,8 @@ TEST(SkyRender, PlaneReflectsTheHorizontalIrradiance) {
         s.lightSampling = mode;
         s.maxDepth = 1;
         Rendered r = render(scene, 16, 16, mode == LightSampling::Bsdf ? 4096 : 256, s);
-        // The baked map departs from the model by up to 0.1 %.
-        expectNear(regionStats(r, 0, 0, 16, 16), expected, 5.0f, 2e-3f, modeName(mode).c_str());
+        // The horizontal irradiance is a midpoint-rule quadrature, good to about 1e-4.
+        expectNear(regionStats(r, 0, 0, 16, 16), expected, 5.0f, 3e-4f, modeName(mode).c_str());
     }
 }
 

@@ -127,6 +127,8 @@ LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {
     if (e.kind == Emitter::Kind::Environment) {
         s.wi = environment_->sample(u, s.radiance, s.pdf);
         s.distance = kInf;
+        // The sky's map is only its density: its radiance comes from the model, as for escaping rays.
+        if (scene_.environment.preetham) s.radiance = scene_.environment.preetham->radiance(s.wi);
         return s;
     }
     if (e.kind == Emitter::Kind::Sun) {

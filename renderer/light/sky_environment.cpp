@@ -35,11 +35,11 @@ SunDisk sunDisk(const PreethamSky& sky) {
 }
 
 Environment skyEnvironment(const SkyParameters& parameters) {
-    PreethamSky sky(parameters);
+    auto sky = std::make_shared<const PreethamSky>(parameters);
     Environment env;
-    env.map = std::make_shared<const EnvironmentMap>(bakeSky(sky));
-    if (!isBlack(sky.sunRadiance())) env.sun = sunDisk(sky);
-    env.preetham = parameters;
+    env.map = std::make_shared<const EnvironmentMap>(bakeSky(*sky));
+    if (!isBlack(sky->sunRadiance())) env.sun = sunDisk(*sky);
+    env.preetham = sky;
     return env;
 }
 

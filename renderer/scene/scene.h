@@ -75,16 +75,17 @@ struct Material {
 // Radiance seen by rays that leave the scene: an HDR map where one is given (it is then a light of
 // the light set, sampled by next-event estimation), else the lab's two tones, `sky` for
 // directions with y > 0 and `ground` below, reached by BSDF sampling only as the lab has it.
-// The Preetham sky is a map baked from the model (light/sky_environment.h) plus the sun's disk,
-// a light of its own; `preetham` keeps the parameters it was made from.
+// The Preetham sky is evaluated from the model itself, with a map baked from it as the density
+// that samples it (light/sky_environment.h), and the sun's disk is a light of its own.
 struct Environment {
     Spectrum sky{0.5f, 0.6f, 0.7f};
     Spectrum ground{0.05f, 0.025f, 0.001f};
     std::shared_ptr<const EnvironmentMap> map;
     std::optional<SunDisk> sun;
-    std::optional<SkyParameters> preetham;
+    std::shared_ptr<const PreethamSky> preetham;
 
     Spectrum radiance(const Vec3& dir) const {
+        if (preetham) return preetham->radiance(dir);
         if (map) return map->radiance(dir);
         return dir.y > 0.0f ? sky : ground;
     }

@@ -451,7 +451,11 @@ def preetham_sky(sun_dir, turbidity, scale, rows=2049, columns=1024):
     phi = 2 * np.pi * ((np.arange(columns) + 0.5) / columns - 0.5)
     T, P = np.meshgrid(theta, phi, indexing="ij")
     d = np.stack([np.sin(T) * np.cos(P), np.cos(T), np.sin(T) * np.sin(P)], axis=-1)
-    emitters = {"env": {"type": "envmap", "bitmap": mi.Bitmap(np.ascontiguousarray(sky.radiance(d), dtype=np.float32)),
+    radiance = sky.radiance(d)
+    # pt's horizon is a step; the row on it holds the mean of both sides, so that Mitsuba's linear
+    # blend between rows is symmetric about the horizon and integrates to the step.
+    radiance[rows // 2] = 0.5 * (sky.sky(d[rows // 2]) + sky.ground)
+    emitters = {"env": {"type": "envmap", "bitmap": mi.Bitmap(np.ascontiguousarray(radiance, dtype=np.float32)),
                         "to_world": mi.ScalarTransform4f().rotate([0, 1, 0], 90.0)}}
     if sky.sun_radiance.max() > 0:
         if sky.sun[1] < math.sin(preetham.SUN_RADIUS):
@@ -493,10 +497,10 @@ def build_scene(obj_path, camera_index, width, height, max_depth, pt_normals, tm
     # The environment: sky above the horizon, ground below. A tall lat-long map keeps the
     # bilinear seam at the horizon within 1/4096 of a half-turn.
     rows = 4096
-    sky = np.zeros((rows, 4, 3), dtype=np.float32)
-    sky[: rows // 2] = SKY
-    sky[rows // 2:] = GROUND
-    scene["env"] = {"type": "envmap", "bitmap": mi.Bitmap(sky)}
+    two_tone = np.zeros((rows, 4, 3), dtype=np.float32)
+    two_tone[: rows // 2] = SKY
+    two_tone[rows // 2:] = GROUND
+    scene["env"] = {"type": "envmap", "bitmap": mi.Bitmap(two_tone)}
     if environment and not env and not sky:  # the MTL's block, unless the command line replaces it
         if environment["sky"]:
             e = environment
