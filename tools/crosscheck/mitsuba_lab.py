@@ -443,9 +443,12 @@ def environment_map(path, rotate, scale):
             "to_world": mi.ScalarTransform4f().rotate([0, 1, 0], 90.0 + rotate)}
 
 
-def preetham_sky(sun_dir, turbidity, scale, rows=2049, columns=1024):
+def preetham_sky(sun_dir, turbidity, scale, rows=4097, columns=8192):
     """The emitters of pt --sky: a map of sky and ground (pt's layout, Mitsuba's pole rows), and the
-    sun's disk as a distant emissive disk."""
+    sun's disk as a distant emissive disk. The map is fine (0.04-degree texels across) because pt
+    evaluates the model exactly and Perez's circumsolar term has a cusp at the sun: at 0.35-degree
+    texels Mitsuba's bilinear lookups blurred it, and glossy reflections of the sun's surroundings
+    came out 0.15 % darker than pt's."""
     sky = preetham.Sky(sun_dir, turbidity, scale)
     theta = np.pi * np.arange(rows) / (rows - 1)
     phi = 2 * np.pi * ((np.arange(columns) + 0.5) / columns - 0.5)
