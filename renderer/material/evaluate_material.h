@@ -1,10 +1,10 @@
 // The one step from a material at a hit to its BSDF: the shading normal after normal or bump
-// maps, the shading frame, texture lookups, the Pm rule, then the lab tree collapsed for the
-// outgoing direction. Everything a material's value depends on at a hit goes through here, so
+// maps, the shading frame, texture lookups, then the material's model: the lab tree (after the
+// Pm rule) collapsed for the outgoing direction, or glTF's metallic-roughness BRDF. Everything a material's value depends on at a hit goes through here, so
 // new maps and lobes have one place to go.
 #pragma once
 
-#include "material/lab_bsdf.h"
+#include "material/bsdf.h"
 #include "render/surface_point.h"
 #include "texture/texture_cache.h"
 
@@ -14,7 +14,7 @@ namespace pt {
 struct ShadingPoint {
     Frame frame;
     Vec3 wo;   // outgoing direction in the frame
-    LabBsdf bsdf;
+    Bsdf bsdf;
 };
 
 // The shading normal after a normal map (tangent space, y along increasing v) or a bump map
@@ -54,6 +54,22 @@ inline ShadingPoint evaluateMaterial(const Material& m, const TextureCache& text
     // shows (silhouettes of smooth meshes, steep bumps), trust the geometry.
     if (glm::dot(wo, n) * glm::dot(wo, sp.ng) <= 0.0f) n = sp.ng;
     ShadingPoint s;
+    if (m.model == MaterialModel::MetalRough) {
+        // Opaque and two-sided: the frame turns to the side wo arrives from.
+        if (glm::dot(wo, n) < 0.0f) n = -n;
+        s.frame = Frame(n);
+        s.wo = s.frame.toLocal(wo);
+        Spectrum base = m.kd;
+        float alpha = m.roughness, metallic = std::max(0.0f, m.metallic);
+        if (m.isTextured()) {
+            // glTF's textures multiply its factors: roughness = factor * G, so alpha = factor^2 G^2.
+            if (m.kdMap.used()) base *= textures.color(m.kdMap, sp.uv, sp.footprint);
+            if (m.roughnessMap.used()) alpha *= sqr(std::clamp(textures.scalar(m.roughnessMap, sp.uv, sp.footprint), 0.0f, 1.0f));
+            if (m.metallicMap.used()) metallic *= std::clamp(textures.scalar(m.metallicMap, sp.uv, sp.footprint), 0.0f, 1.0f);
+        }
+        s.bsdf = MetalRoughBsdf::make(base, metallic, alpha, m.eta, s.wo.z);
+        return s;
+    }
     s.frame = Frame(n);
     s.wo = s.frame.toLocal(wo);
     if (!m.isTextured()) {

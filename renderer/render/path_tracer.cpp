@@ -74,9 +74,9 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
         ShadingPoint shading = evaluateMaterial(m, *scene_.textures, sp, -ray.dir, settings_.hemisphere);
         const Frame& frame = shading.frame;
         const Vec3 woLocal = shading.wo;
-        const LabBsdf& bsdf = shading.bsdf;
+        const Bsdf& bsdf = shading.bsdf;
         if (depth == 0 && first) {
-            first->albedo = bsdf.mirror + bsdf.refract + bsdf.diffuse;
+            first->albedo = bsdf.albedo();
             first->normal = woLocal.z >= 0.0f ? frame.n : -frame.n;
             first->depth = hit.t;
         }

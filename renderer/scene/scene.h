@@ -40,12 +40,18 @@ struct SphereLight {
     Spectrum radiance() const { return intensity / (kPi * radius * radius); }
 };
 
+// Which BSDF a material is: the lab's tree (OBJ + MTL), or glTF 2.0's metallic-roughness BRDF
+// (material/metal_rough_bsdf.h), whose base colour is kd, alpha roughness, metallic and eta its
+// ior, each texture multiplying its factor.
+enum class MaterialModel : uint8_t { Lab, MetalRough };
+
 // A material as its file gives it; material/evaluate_material.h turns it into a BSDF at a hit.
 // Parameters of the lab material tree (see material/lab_bsdf.h for how they combine):
 //   f  = w * FresnelBlend(R0)[reflect: Spec(Ks), otherwise: B1] + (1 - w) * B1
 //   B1 = T * Refr(eta) + (1 - T) * Diffuse(Kd)
 struct Material {
     std::string name;
+    MaterialModel model = MaterialModel::Lab;
     Spectrum kd{0.7f};            // Lambert reflectance (Kd, diffuseReflectance)
     TextureMap kdMap;             // multiplies kd (map_Kd), with its -s, -o and -clamp options
     TextureMap ksMap;             // multiplies ks (map_Ks)

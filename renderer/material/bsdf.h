@@ -1,0 +1,43 @@
+// The BSDF at a hit, whichever material model made it: the lab's tree (lab_bsdf.h) or glTF's
+// metallic-roughness BRDF (metal_rough_bsdf.h). A tag and a switch, not virtual calls: the path
+// loop sees one interface, and each call is a predictable branch on the hit's material.
+#pragma once
+
+#include "material/lab_bsdf.h"
+#include "material/metal_rough_bsdf.h"
+
+namespace pt {
+
+struct Bsdf {
+    enum class Model : uint8_t { Lab, MetalRough };
+    Model model = Model::Lab;
+    LabBsdf lab;
+    MetalRoughBsdf metalRough;
+
+    Bsdf() = default;
+    Bsdf(const LabBsdf& b) : model(Model::Lab), lab(b) {}
+    Bsdf(const MetalRoughBsdf& b) : model(Model::MetalRough), metalRough(b) {}
+
+    bool hasNonDelta() const { return model == Model::Lab ? lab.hasNonDelta() : metalRough.hasNonDelta(); }
+    bool isBlack() const { return model == Model::Lab ? lab.isBlack() : metalRough.isBlack(); }
+    Spectrum albedo() const {
+        return model == Model::Lab ? lab.mirror + lab.refract + lab.diffuse : metalRough.albedo();
+    }
+    Spectrum evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) const {
+        return model == Model::Lab ? lab.evalPdf(wo, wi, pdf) : metalRough.evalPdf(wo, wi, pdf);
+    }
+    Spectrum eval(const Vec3& wo, const Vec3& wi) const {
+        float unused;
+        return evalPdf(wo, wi, unused);
+    }
+    float pdf(const Vec3& wo, const Vec3& wi) const {
+        float p;
+        evalPdf(wo, wi, p);
+        return p;
+    }
+    bool sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
+        return model == Model::Lab ? lab.sample(wo, u1, u2, out) : metalRough.sample(wo, u1, u2, out);
+    }
+};
+
+} // namespace pt

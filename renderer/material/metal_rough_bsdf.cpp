@@ -1,0 +1,89 @@
+#include "material/metal_rough_bsdf.h"
+
+#include "sampling/warp.h"
+
+namespace pt {
+namespace {
+
+inline float schlickWeight(float cosTheta) {
+    float m = 1.0f - std::clamp(cosTheta, 0.0f, 1.0f);
+    float m2 = m * m;
+    return m2 * m2 * m;
+}
+
+} // namespace
+
+MetalRoughBsdf MetalRoughBsdf::make(const Spectrum& baseColor, float metallic, float alpha, float ior, float cosThetaO) {
+    MetalRoughBsdf b;
+    b.baseColor = baseColor;
+    b.metallic = std::clamp(metallic, 0.0f, 1.0f);
+    b.alpha = alpha > kSmoothAlpha ? alpha : 0.0f;
+    b.f0 = sqr((ior - 1.0f) / (ior + 1.0f));
+    // Lobe weights at wo, with Fresnel at the normal: the sampling estimate of each lobe's share.
+    float w = schlickWeight(cosThetaO);
+    float fd = b.f0 + (1.0f - b.f0) * w;
+    Spectrum fm = baseColor + (Spectrum(1.0f) - baseColor) * w;
+    float specular = (1.0f - b.metallic) * fd + b.metallic * average(fm);
+    float diffuse = (1.0f - b.metallic) * (1.0f - fd) * average(baseColor);
+    float sum = specular + diffuse;
+    if (cosThetaO > 0.0f && sum > 0.0f) {
+        b.pSpecular = specular / sum;
+        b.pDiffuse = diffuse / sum;
+    }
+    return b;
+}
+
+Spectrum MetalRoughBsdf::evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) const {
+    pdf = 0.0f;
+    if (wo.z <= 0.0f || wi.z <= 0.0f || isBlack()) return Spectrum(0.0f);
+    Vec3 h = safeNormalize(wo + wi);
+    float vh = glm::dot(wo, h);
+    float w = schlickWeight(vh);
+    float fd = f0 + (1.0f - f0) * w;
+    Spectrum f = ((1.0f - metallic) * (1.0f - fd) * kInvPi * wi.z) * baseColor;
+    pdf = pDiffuse * wi.z * kInvPi;
+    if (!smooth() && h.z > 0.0f) {
+        Spectrum fm = baseColor + (Spectrum(1.0f) - baseColor) * w;
+        // S |cos theta_i| = D G2 / (4 cos theta_o).
+        float s = ggxD(h, alpha) * smithG2HeightCorrelated(wo, wi, h, alpha) / (4.0f * wo.z);
+        f += s * ((1.0f - metallic) * Spectrum(fd) + metallic * fm);
+        pdf += pSpecular * visibleNormalPdf(wo, h, alpha) * reflectionJacobian(wi, h);
+    }
+    return f;
+}
+
+bool MetalRoughBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
+    if (wo.z <= 0.0f || isBlack()) return false;
+    if (u1 < pSpecular) {
+        if (smooth()) {
+            // The mirror, with Fresnel at the normal (h = n).
+            float w = schlickWeight(wo.z);
+            Spectrum fm = baseColor + (Spectrum(1.0f) - baseColor) * w;
+            Spectrum lobe = (1.0f - metallic) * Spectrum(f0 + (1.0f - f0) * w) + metallic * fm;
+            out.wi = Vec3(-wo.x, -wo.y, wo.z);
+            out.weight = lobe / pSpecular;
+            out.pdf = 0.0f;
+            out.lobeProbability = pSpecular;
+            out.delta = true;
+            out.radianceScale = 1.0f;
+            return true;
+        }
+        Vec3 m = sampleVisibleNormal(wo, alpha, u2);
+        out.wi = 2.0f * glm::dot(wo, m) * m - wo;
+        out.lobeProbability = pSpecular;
+    } else {
+        out.wi = squareToCosineHemisphere(u2);
+        out.lobeProbability = pDiffuse;
+    }
+    if (out.wi.z <= 0.0f) return false;
+    float pdf;
+    Spectrum f = evalPdf(wo, out.wi, pdf);
+    if (!(pdf > 0.0f)) return false;
+    out.weight = f / pdf;
+    out.pdf = pdf;
+    out.delta = false;
+    out.radianceScale = 1.0f;
+    return true;
+}
+
+} // namespace pt

@@ -1,0 +1,47 @@
+// glTF 2.0's metallic-roughness BRDF (the specification's Appendix B) at one hit:
+//
+//   f          = (1 - metallic) dielectric + metallic metal
+//   dielectric = (1 - F_d(v.h)) baseColor / pi + F_d(v.h) S
+//   metal      = F_m(v.h) S
+//   S          = D(h) G2(v, l) / (4 |n.v| |n.l|),  GGX with alpha = roughness^2, G2 height-correlated
+//   F_d        = F0 + (1 - F0)(1 - |v.h|)^5, F0 = ((ior - 1) / (ior + 1))^2 (0.04 for ior 1.5)
+//   F_m        = baseColor + (1 - baseColor)(1 - |v.h|)^5
+//
+// Fresnel is taken at the half vector, as the specification writes it; the specular lobe has no
+// multiple-scattering compensation, so rough metals lose energy as the lab's rough lobes do.
+// At alpha <= kSmoothAlpha the specular lobe is a delta mirror with Fresnel at the normal.
+// Surfaces are two-sided: evaluate_material.h turns the frame to the side wo arrives from.
+//
+// Sampling picks the specular lobe (visible normals, microfacet.h) or the cosine-weighted
+// diffuse one in proportion to their weights at wo, and reports the density of the mixture, so
+// that eval / pdf is the sample's weight and MIS sees the true density.
+#pragma once
+
+#include "material/lab_bsdf.h"
+
+namespace pt {
+
+struct MetalRoughBsdf {
+    Spectrum baseColor{1.0f};
+    float metallic = 0.0f;
+    float alpha = 0.0f; // 0: smooth (delta) specular lobe
+    float f0 = 0.04f;   // dielectric reflectance at normal incidence
+    float pSpecular = 0.0f, pDiffuse = 0.0f;
+
+    static MetalRoughBsdf make(const Spectrum& baseColor, float metallic, float alpha, float ior, float cosThetaO);
+
+    bool smooth() const { return alpha <= 0.0f; }
+    bool hasNonDelta() const { return pDiffuse > 0.0f || (!smooth() && pSpecular > 0.0f); }
+    bool isBlack() const { return pSpecular + pDiffuse == 0.0f; }
+    // The colour of the surface, for the albedo AOV: diffuse for dielectrics, F0 for metals.
+    Spectrum albedo() const { return baseColor; }
+
+    Spectrum evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) const;
+    Spectrum eval(const Vec3& wo, const Vec3& wi) const {
+        float unused;
+        return evalPdf(wo, wi, unused);
+    }
+    bool sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const;
+};
+
+} // namespace pt
