@@ -30,7 +30,10 @@ namespace {
 
 const char* kRenderUsage = R"(usage: pt render SCENE [options]
 
-Renders SCENE (Wavefront .obj with the lab's extended .mtl) and writes one image.
+Renders SCENE (Wavefront .obj with the lab's extended .mtl, or glTF 2.0 .gltf/.glb) and writes
+one image. glTF: metallic-roughness materials with their textures, alphaMode, KHR_lights_punctual,
+KHR_materials_emissive_strength, KHR_materials_ior, KHR_texture_transform, KHR_mesh_quantization;
+lights in candela and lux divided by 683 lm/W; without lights, a uniform white environment.
 MTL texture maps: map_Kd, map_Ks (colour), map_Pr, map_Pm, norm, bump/map_bump, map_d (data),
 with options -s, -o, -clamp on|off, -bm, -imfchan r|g|b|m|l (see the README).
 MTL environment: newenvironment NAME, envmap FILE, envrotate DEG, envscale S (--env replaces it).
@@ -40,7 +43,8 @@ options (default in brackets):
                            .exr  linear float RGB, metadata, and any --aov layers
                            .png  sRGB-encoded 8-bit RGB
   -spp, --spp N          samples per pixel [16]
-  --res WxH              image size in pixels [512x512]
+  --res WxH              image size in pixels [512x512; a glTF camera's aspect ratio
+                         gives 512 across its longer side]
   --camera NAME|INDEX    camera by name, or by 0-based index in file order [0]
   --threads N            worker threads; 0 uses every hardware thread, and more than the
                          machine has are cut to that many, with a warning [0]
@@ -95,6 +99,7 @@ struct RenderArgs {
     std::string output = "out.exr";
     long long spp = 16;
     int width = 512, height = 512;
+    bool resGiven = false;
     std::string camera = "0";
     int threads = 0;
     RenderSettings settings;
@@ -156,6 +161,7 @@ RenderArgs parseArgs(int argc, char** argv) {
             r.spp = args.integer(opt, 1, 1 << 24);
         } else if (opt == "res") {
             parseResolution(args.value(opt), r.width, r.height);
+            r.resGiven = true;
         } else if (opt == "camera") {
             r.camera = args.value(opt);
         } else if (opt == "threads") {
@@ -453,6 +459,7 @@ int renderCommand(int argc, char** argv) {
             warnings.add("the sun is below the horizon: the model has no twilight, so the sky is that of a sun on the "
                          "horizon and the sun's disk is hidden");
     }
+    addDefaultLighting(scene, warnings);
     double loadSeconds = secondsSince(t0);
 
     int hardware = tbb::info::default_concurrency();
@@ -467,6 +474,12 @@ int renderCommand(int argc, char** argv) {
     OutputFile output;
     try {
         cameraIndex = pickCamera(scene, args.camera);
+        // A camera that asks for an aspect ratio (glTF) gets it unless --res says otherwise:
+        // 512 pixels across its longer side.
+        if (float aspect = scene.cameras[cameraIndex].aspect; aspect > 0.0f && !args.resGiven) {
+            if (aspect >= 1.0f) args.height = std::max(1, int(std::lround(512.0f / aspect)));
+            else args.width = std::max(1, int(std::lround(512.0f * aspect)));
+        }
         std::vector<std::string> inputs = scene.sources;
         for (size_t i = 0; i < scene.textures->size(); ++i) inputs.push_back((*scene.textures)[int(i)].path);
         if (!args.env.empty()) inputs.push_back(args.env);

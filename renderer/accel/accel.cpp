@@ -55,6 +55,7 @@ void cutoutFilter(const RTCFilterFunctionNArguments* args) {
             uv = (1.0f - u - v) * scene.uvs[ti.x] + u * scene.uvs[ti.y] + v * scene.uvs[ti.z];
         }
         float coverage = m.alpha * scene.textures->scalar(m.alphaMap, uv, Footprint{});
+        if (m.alphaCutoff >= 0.0f) coverage = coverage >= m.alphaCutoff ? 1.0f : 0.0f;
         if (coverage >= 1.0f) continue;
         float coin = coverageCoin(tri, u, v, RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
                                   RTCRayN_dir_z(args->ray, args->N, i));

@@ -22,7 +22,36 @@ double sceneBoundingRadius(const Scene& scene) {
     return r > 0.0 ? r : 1.0;
 }
 
+double meanTexel(const Texture& t) {
+    double sum = 0.0;
+    for (float v : t.texels) sum += v;
+    return t.texels.empty() ? 1.0 : sum / double(t.texels.size());
+}
+
 } // namespace
+
+// KHR_lights_punctual's falloffs: the spot's, smooth from the inner to the outer cone, and the
+// window that ends a light at its range (the extension's recommended (1 - (d / range)^4)^2).
+float LightSet::punctualFalloff(const SphereLight& l, const Vec3& wi, float distance) {
+    float f = 1.0f;
+    if (l.isSpot()) {
+        float cd = -glm::dot(l.spotDirection, wi);
+        float t = std::clamp((cd - l.cosOuter) / std::max(1e-3f, l.cosInner - l.cosOuter), 0.0f, 1.0f);
+        f = t * t;
+    }
+    if (l.range > 0.0f) f *= sqr(std::clamp(1.0f - sqr(sqr(distance / l.range)), 0.0f, 1.0f));
+    return f;
+}
+
+// The emission texture at barycentrics (b1, b2) of emissive triangle t.
+Spectrum LightSet::emissionTexel(const Material& m, uint32_t t, Vec2 bary) const {
+    Vec2 uv(0.0f);
+    if (!scene_.triUvs.empty() && scene_.triUvs[t].x >= 0) {
+        const glm::ivec3& ti = scene_.triUvs[t];
+        uv = (1.0f - bary.x - bary.y) * scene_.uvs[ti.x] + bary.x * scene_.uvs[ti.y] + bary.y * scene_.uvs[ti.z];
+    }
+    return scene_.textures->color(m.emissionMap, uv, Footprint{});
+}
 
 LightSet::LightSet(const Scene& scene) : scene_(scene) {
     std::vector<double> power; // in double: 2 pi A Le can pass float's range
@@ -35,7 +64,9 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
         e.radius = l.radius;
         e.radiance = l.isPoint() ? l.intensity : l.radiance();
         emitters_.push_back(e);
-        power.push_back(4.0 * kPi * double(average(l.intensity))); // same for a sphere and a point
+        // 4 pi I for a sphere and a point; a spot sends its intensity into its cone only.
+        double solidAngle = l.isSpot() ? 2.0 * kPi * (1.0 - 0.5 * (double(l.cosInner) + l.cosOuter)) : 4.0 * kPi;
+        power.push_back(solidAngle * double(average(l.intensity)));
     }
     bool anyEmissive = false;
     for (const Material& m : scene.materials) anyEmissive |= m.isEmissive();
@@ -63,7 +94,9 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
             Emitter e{Emitter::Kind::Triangle, uint32_t(t)};
             e.radiance = m.emission;
             emitters_.push_back(e);
-            power.push_back(2.0 * kPi * double(area) * double(average(m.emission))); // both sides emit
+            // Both sides emit; a textured emitter by its texture's mean (a guess at this triangle's share).
+            double mean = m.emissionMap.used() ? meanTexel(scene.textures->operator[](m.emissionMap.texture)) : 1.0;
+            power.push_back(2.0 * kPi * double(area) * double(average(m.emission)) * mean);
         }
     }
     if (scene.environment.map) {
@@ -89,6 +122,14 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
         emitters_.push_back(e);
         power.push_back(kPi * radius * radius * double(sun->solidAngle()) * double(average(sun->radiance)));
     }
+    for (const DirectionalLight& d : scene.directionalLights) {
+        double radius = sceneBoundingRadius(scene);
+        Emitter e{Emitter::Kind::Directional, 0};
+        e.center = d.direction;
+        e.radiance = d.irradiance;
+        emitters_.push_back(e);
+        power.push_back(kPi * radius * radius * double(average(d.irradiance)));
+    }
     distribution_ = Distribution1D(power);
 }
 
@@ -101,7 +142,15 @@ LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {
         if (!(dist2 > 0.0f)) return s;
         s.distance = std::sqrt(dist2);
         s.wi = d / s.distance;
-        s.radiance = e.radiance / dist2;
+        s.radiance = e.radiance * (punctualFalloff(scene_.lights[e.index], s.wi, s.distance) / dist2);
+        s.pdf = 1.0f;
+        s.delta = true;
+        return s;
+    }
+    if (e.kind == Emitter::Kind::Directional) {
+        s.wi = e.center;
+        s.distance = kInf;
+        s.radiance = e.radiance;
         s.pdf = 1.0f;
         s.delta = true;
         return s;
@@ -157,13 +206,15 @@ LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {
     float cosLight = std::abs(glm::dot(s.normal, s.wi));
     if (cosLight == 0.0f) return s;
     s.radiance = e.radiance;
+    const Material& m = scene_.materials[scene_.triMaterial[e.index]];
+    if (m.emissionMap.used()) s.radiance *= emissionTexel(m, e.index, bary);
     s.pdf = dist2 / (cosLight * 0.5f * area2);
     return s;
 }
 
 float LightSet::pdf(size_t i, const Vec3& p, const Vec3& wi, float distance) const {
     const Emitter& e = emitters_[i];
-    if (e.kind == Emitter::Kind::Point) return 0.0f;
+    if (e.kind == Emitter::Kind::Point || e.kind == Emitter::Kind::Directional) return 0.0f;
     if (e.kind == Emitter::Kind::Sphere) return sphereCapPdf(sphereCap(p, e.center, e.radius));
     if (e.kind == Emitter::Kind::Environment) return environment_->pdf(wi);
     if (e.kind == Emitter::Kind::Sun) return scene_.environment.sun->covers(wi) ? uniformConePdf(e.radius) : 0.0f;

@@ -14,12 +14,13 @@
 namespace pt {
 
 struct Emitter {
-    enum class Kind : uint8_t { Sphere, Point, Triangle, Environment, Sun };
+    enum class Kind : uint8_t { Sphere, Point, Triangle, Environment, Sun, Directional };
     Kind kind;
     uint32_t index;    // into Scene::lights, or a triangle index
-    Vec3 center{0.0f}; // sphere and point lights; the sun: its direction
+    Vec3 center{0.0f}; // sphere and point lights; the sun and directional lights: their direction
     float radius = 0.0f; // sphere lights; the sun: 1 - cos of its angular radius
-    Spectrum radiance{0.0f}; // sphere: I / (pi r^2); point: intensity I; triangle: Le; sun: its disk's; environment: unused
+    Spectrum radiance{0.0f}; // sphere: I / (pi r^2); point: intensity I; triangle: Le; sun: its disk's;
+                             // directional: irradiance; environment: unused
 };
 
 // A point on a light seen from a shading point, with what a shadow ray needs to reach it.
@@ -28,7 +29,7 @@ struct LightSample {
     float distance = 0.0f; // to the sampled point (for spheres: to the sphere's surface; environment, sun: inf)
     Spectrum radiance;    // emitted radiance towards the shading point; for point lights I / d^2
     float pdf = 0.0f;     // solid-angle density, emitter choice excluded; 0 means no sample
-    bool delta = false;   // point light: cannot be hit by BSDF sampling
+    bool delta = false;   // point and directional lights: cannot be hit by BSDF sampling
     // For triangles: the point, its error bound and normal, to offset the shadow ray's end.
     Vec3 point, normal;
     float pointError = 0.0f;
@@ -67,7 +68,12 @@ public:
     // that it hits the emitter at distance `distance` (emitter choice excluded).
     float pdf(size_t i, const Vec3& p, const Vec3& wi, float distance) const;
 
+    // The spot cone and range falloff of a point light (1 for the lab's lights).
+    static float punctualFalloff(const SphereLight& l, const Vec3& wi, float distance);
+
 private:
+    Spectrum emissionTexel(const Material& m, uint32_t triangle, Vec2 bary) const;
+
     const Scene& scene_;
     std::vector<Emitter> emitters_;
     Distribution1D distribution_;

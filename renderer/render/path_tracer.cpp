@@ -66,11 +66,14 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
         const ShadingTriangle& tri = triangles_[hit.prim];
         SurfacePoint sp = makeSurfacePoint(tri, hit);
         const Material& m = scene_.materials[sp.material];
-        if (m.isEmissive()) L += beta * m.emission * hitWeight(lights_.emitterOfTriangle(hit.prim), hit.t);
-        if (depth == settings_.maxDepth) break;
-
         coneWidth += pixelSpread_ * hit.t;
         if (m.isTextured()) addTextureCoordinates(sp, tri, scene_, tangents_, hit, ray.dir, coneWidth);
+        if (m.isEmissive()) {
+            Spectrum Le = m.emission;
+            if (m.emissionMap.used()) Le *= scene_.textures->color(m.emissionMap, sp.uv, sp.footprint);
+            L += beta * Le * hitWeight(lights_.emitterOfTriangle(hit.prim), hit.t);
+        }
+        if (depth == settings_.maxDepth) break;
         ShadingPoint shading = evaluateMaterial(m, *scene_.textures, sp, -ray.dir, settings_.hemisphere);
         const Frame& frame = shading.frame;
         const Vec3 woLocal = shading.wo;

@@ -1,4 +1,5 @@
-// Camera rays of the lab's pinhole camera: vertical field of view, image row 0 at the top.
+// Camera rays of the lab's pinhole camera (vertical field of view), or of an orthographic one
+// (glTF's), image row 0 at the top.
 #pragma once
 
 #include "accel/accel.h"
@@ -12,7 +13,8 @@ public:
         Vec3 forward = safeNormalize(c.target - c.position); // a plain length underflows at 1e-19
         Vec3 right = safeNormalize(glm::cross(forward, c.up)); // cameraup need not be orthogonal
         Vec3 up = glm::cross(right, forward);
-        float tanY = std::tan(glm::radians(0.5f * c.fovY));
+        orthographic_ = c.orthoHalfHeight > 0.0f;
+        float tanY = orthographic_ ? c.orthoHalfHeight : std::tan(glm::radians(0.5f * c.fovY));
         float tanX = tanY * float(width) / float(height);
         forward_ = forward;
         right_ = right * tanX;
@@ -23,12 +25,14 @@ public:
     Ray generate(float px, float py) const {
         float x = 2.0f * px / float(width_) - 1.0f;
         float y = 1.0f - 2.0f * py / float(height_);
+        if (orthographic_) return Ray{origin_ + x * right_ + y * up_, forward_};
         return Ray{origin_, glm::normalize(forward_ + x * right_ + y * up_)};
     }
 
 private:
     Vec3 origin_, forward_, right_, up_;
     int width_, height_;
+    bool orthographic_ = false;
 };
 
 } // namespace pt

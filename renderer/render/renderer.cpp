@@ -15,6 +15,7 @@ namespace {
 // Angle between the camera rays of neighbouring pixels at the image centre, scaled for the
 // samples that share a pixel.
 float pixelSpread(const Camera& camera, int height, uint32_t spp) {
+    if (camera.orthoHalfHeight > 0.0f) return 0.0f; // parallel rays: no spread (bilinear lookups)
     float pixel = 2.0f * std::tan(glm::radians(0.5f * camera.fovY)) / float(height);
     return pixel * std::max(0.125f, 1.0f / std::sqrt(float(std::max(spp, 1u))));
 }

@@ -23,6 +23,8 @@ struct Camera {
     Vec3 target{0.0f, 0.0f, -1.0f};
     Vec3 up{0.0f, 1.0f, 0.0f};
     float fovY = 45.0f;
+    float aspect = 0.0f;          // width / height the file asks for (glTF); 0: none, --res decides
+    float orthoHalfHeight = 0.0f; // > 0: orthographic, seeing this far above and below the axis (glTF ymag)
 };
 
 // The lab's light: a sphere of radius r emitting uniform radiance intensity / (pi r^2), so a
@@ -35,8 +37,14 @@ struct SphereLight {
     Spectrum intensity{1.0f}; // lightintensity * lightcolor
     std::string source;       // "file:line: " of its lightintensity (or newlight), for messages
     std::string radiusSource; // same for lightradius
+    // glTF's KHR_lights_punctual on a point light: a spot cone (cosOuter < 1) with the
+    // extension's smooth falloff from cosInner to cosOuter, and a range beyond which it is dark.
+    Vec3 spotDirection{0.0f, 0.0f, -1.0f};
+    float cosInner = 1.0f, cosOuter = 1.0f; // 1, 1: no cone
+    float range = 0.0f;                      // 0: infinite
 
     bool isPoint() const { return radius <= 0.0f; }
+    bool isSpot() const { return cosOuter < 1.0f; }
     Spectrum radiance() const { return intensity / (kPi * radius * radius); }
 };
 
@@ -44,6 +52,13 @@ struct SphereLight {
 // (material/metal_rough_bsdf.h), whose base colour is kd, alpha roughness, metallic and eta its
 // ior, each texture multiplying its factor.
 enum class MaterialModel : uint8_t { Lab, MetalRough };
+
+// A light at infinity in one direction (glTF's directional light): irradiance on a surface facing it.
+struct DirectionalLight {
+    std::string name;
+    Vec3 direction{0.0f, 1.0f, 0.0f}; // unit, towards the light
+    Spectrum irradiance{1.0f};        // W/m^2
+};
 
 // A material as its file gives it; material/evaluate_material.h turns it into a BSDF at a hit.
 // Parameters of the lab material tree (see material/lab_bsdf.h for how they combine):
@@ -60,6 +75,7 @@ struct Material {
     TextureMap normalMap;         // tangent-space normal map (norm)
     TextureMap bumpMap;           // height map, height = -bm * value (bump, map_bump)
     TextureMap alphaMap;          // coverage = alpha * value (map_d); rays pass the rest
+    TextureMap emissionMap;       // multiplies emission (glTF emissiveTexture)
     Spectrum ks{1.0f};            // mirror colour (Ks, specularReflectance)
     Spectrum r0{0.0f};            // Fresnel reflectance at normal incidence (reflat0deg)
     float blend = 0.0f;           // w, weight of the Fresnel blend (reflat90deg)
@@ -68,13 +84,15 @@ struct Material {
     float roughness = 0.001f;     // GGX alpha (specularroughness, or Pr^2); <= 0.001 is smooth
     float metallic = -1.0f;       // Pm in [0, 1], applied when the material is evaluated; < 0: not given
     float alpha = 1.0f;           // coverage multiplier of map_d (d, where map_d is given)
+    float alphaCutoff = -1.0f;    // >= 0: coverage is 1 at or above it and 0 below (glTF MASK)
     Spectrum emission{0.0f};      // emitted radiance, both sides (Ke, emittance)
 
     bool isEmissive() const { return !isBlack(emission); }
     bool hasCutout() const { return alphaMap.used(); }
     bool perturbsNormal() const { return normalMap.used() || bumpMap.used(); }
     bool isTextured() const {
-        return kdMap.used() || ksMap.used() || roughnessMap.used() || metallicMap.used() || perturbsNormal();
+        return kdMap.used() || ksMap.used() || roughnessMap.used() || metallicMap.used() || perturbsNormal() ||
+               emissionMap.used();
     }
 };
 
@@ -113,6 +131,7 @@ struct Scene {
     std::vector<Material> materials;
     std::shared_ptr<TextureCache> textures = std::make_shared<TextureCache>(); // shared by copies
     std::vector<SphereLight> lights;
+    std::vector<DirectionalLight> directionalLights;
     std::vector<Camera> cameras;
     Environment environment;
 

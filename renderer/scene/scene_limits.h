@@ -4,6 +4,8 @@
 // wrong image.
 #pragma once
 
+#include <cstddef>
+
 namespace pt {
 
 // Largest coordinate. Embree 3's float ray-triangle test forms products of three lengths: the
@@ -24,5 +26,7 @@ inline constexpr float kPointLightDistanceFraction = 0.1f;
 // Smallest sphere light radius, as a fraction of the scene's size: below it the light's solid
 // angle underflows float and the light vanishes. Radius 0 is a point light.
 inline constexpr float kMinLightRadiusFraction = 1e-12f;
+// Most triangles: Embree's primitive IDs and pt's triangle indices are 32-bit.
+inline constexpr unsigned long long kMaxTriangles = 1ull << 31;
 
 } // namespace pt

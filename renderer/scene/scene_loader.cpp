@@ -1,5 +1,7 @@
 #include "scene/scene_loader.h"
 
+#include "gltf/gltf_loader.h"
+#include "light/environment_map.h"
 #include "scene/obj_loader.h"
 #include "scene/scene_limits.h"
 #include "scene/text_parser.h"
@@ -82,19 +84,40 @@ Scene loadScene(const std::string& path, Warnings& warnings) {
     Scene scene;
     if (ext == ".obj") {
         scene = loadObj(path, warnings);
+    } else if (ext == ".gltf" || ext == ".glb") {
+        scene = loadGltf(path, warnings);
     } else {
-        throw LoadError(path + ": unsupported scene format \"" + ext + "\"; expected .obj");
+        throw LoadError(path + ": unsupported scene format \"" + ext + "\"; expected .obj, .gltf or .glb");
     }
     completeScene(scene, warnings);
     return scene;
+}
+
+static bool isGltf(const std::string& path) {
+    std::string ext = toLower(std::filesystem::path(path).extension().string());
+    return ext == ".gltf" || ext == ".glb";
+}
+
+void addDefaultLighting(Scene& scene, Warnings& warnings) {
+    if (!isGltf(scene.path) || scene.environment.map || !scene.lights.empty() || !scene.directionalLights.empty()) return;
+    auto white = std::make_shared<EnvironmentMap>();
+    white->path = "(uniform white)";
+    white->width = 4;
+    white->height = 2;
+    white->rgb.assign(4 * 2 * 3, 1.0f);
+    scene.environment.map = white;
+    warnings.add(scene.path + ": the file has no lights; lighting it with a uniform white environment of radiance 1 "
+                              "(give --env or --sky to light it otherwise)");
 }
 
 void completeScene(Scene& scene, Warnings& warnings) {
     const std::string& path = scene.path;
     if (scene.cameras.empty()) {
         scene.cameras.push_back(frameScene(scene));
-        warnings.add(path + ": no camera defined; framing the whole scene from +z (add a newcamera "
-                            "block to the MTL to choose the view)");
+        warnings.add(path + (isGltf(path) ? ": no camera defined; framing the whole scene from +z (--camera picks "
+                                            "one where the file has cameras)"
+                                          : ": no camera defined; framing the whole scene from +z (add a newcamera "
+                                            "block to the MTL to choose the view)"));
     }
     size_t degenerate = 0;
     for (const glm::uvec3& tri : scene.triPositions) {
@@ -105,7 +128,7 @@ void completeScene(Scene& scene, Warnings& warnings) {
         warnings.add(path + ": " + std::to_string(degenerate) + " of " + std::to_string(scene.triangleCount()) +
                      " triangles have zero area; rays never hit them");
     checkSceneLimits(scene);
-    if (scene.triangleCount() == 0 && scene.lights.empty())
+    if (scene.triangleCount() == 0 && scene.lights.empty() && scene.directionalLights.empty())
         warnings.add(path + ": the scene has no geometry and no lights; only the environment will show");
 }
 

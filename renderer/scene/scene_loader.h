@@ -16,6 +16,13 @@ Scene loadScene(const std::string& path, Warnings& warnings);
 // and warns about degenerate triangles or an empty scene.
 void completeScene(Scene& scene, Warnings& warnings);
 
+// For a glTF scene without lights (KHR_lights_punctual) or an environment (--env, --sky): a
+// uniform white environment of radiance 1, with a warning. It shows base colours as they are, as
+// a grey-card studio would, with soft contact shadows and no light direction to prefer; emissive
+// surfaces still glow, and inside a closed room the environment never reaches. OBJ scenes keep
+// the lab's two-tone sky. Call after the command line has set the environment.
+void addDefaultLighting(Scene& scene, Warnings& warnings);
+
 // Axis-aligned bounds of all triangle vertices and lights.
 void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi);
 

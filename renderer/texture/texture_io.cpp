@@ -3,6 +3,7 @@
 #include "core/color.h"
 #include "core/system.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -16,19 +17,12 @@ double textureMemoryBudget() {
     return physical > 0 ? 0.25 * physical : 4e9;
 }
 
-bool readTexture(const std::string& path, bool colour, Texture& texture, std::string& error, double budgetBytes,
-                 bool& tooLarge) {
-    tooLarge = false;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) { // a pipe or device could block forever
-        error = "texture \"" + path + "\" " + (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found");
-        return false;
-    }
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) {
-        error = "cannot read texture \"" + path + "\": " + OIIO::geterror();
-        return false;
-    }
+namespace {
+
+// Decodes an opened image into `texture`; `path` names it in messages and in the texture.
+bool decodeTexture(OIIO::ImageInput& imageInput, const std::string& path, bool colour, Texture& texture,
+                   std::string& error, double budgetBytes, bool& tooLarge) {
+    OIIO::ImageInput* in = &imageInput;
     const OIIO::ImageSpec spec = in->spec();
     int w = spec.width, h = spec.height, nc = spec.nchannels;
     if (w <= 0 || h <= 0 || nc <= 0) {
@@ -76,6 +70,36 @@ bool readTexture(const std::string& path, bool colour, Texture& texture, std::st
         v = !std::isfinite(v) ? 0.0f : colour ? std::max(v, 0.0f) : v; // data may be signed
     }
     return true;
+}
+
+} // namespace
+
+bool readTexture(const std::string& path, bool colour, Texture& texture, std::string& error, double budgetBytes,
+                 bool& tooLarge) {
+    tooLarge = false;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) { // a pipe or device could block forever
+        error = "texture \"" + path + "\" " + (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found");
+        return false;
+    }
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) {
+        error = "cannot read texture \"" + path + "\": " + OIIO::geterror();
+        return false;
+    }
+    return decodeTexture(*in, path, colour, texture, error, budgetBytes, tooLarge);
+}
+
+bool readTextureFromMemory(const std::vector<unsigned char>& bytes, const std::string& name, const std::string& format,
+                           bool colour, Texture& texture, std::string& error, double budgetBytes, bool& tooLarge) {
+    tooLarge = false;
+    OIIO::Filesystem::IOMemReader reader(const_cast<unsigned char*>(bytes.data()), bytes.size());
+    auto in = OIIO::ImageInput::open("image" + format, nullptr, &reader);
+    if (!in) {
+        error = "cannot decode " + name + ": " + OIIO::geterror();
+        return false;
+    }
+    return decodeTexture(*in, name, colour, texture, error, budgetBytes, tooLarge);
 }
 
 } // namespace pt

@@ -4,6 +4,7 @@
 #include "texture/texture.h"
 
 #include <string>
+#include <vector>
 
 namespace pt {
 
@@ -15,6 +16,12 @@ namespace pt {
 // before any pixel is decoded (a 260 KB PNG can declare 16384 x 16384), and `tooLarge` is set
 // when that is the reason for failing.
 bool readTexture(const std::string& path, bool colour, Texture& texture, std::string& error, double budgetBytes, bool& tooLarge);
+
+// The same for an image held in memory (glTF's embedded images, and its files once read): `name`
+// stands for the path in messages and in the texture, `format` is the file extension that picks
+// the decoder (".png", ".jpg").
+bool readTextureFromMemory(const std::vector<unsigned char>& bytes, const std::string& name, const std::string& format,
+                           bool colour, Texture& texture, std::string& error, double budgetBytes, bool& tooLarge);
 
 // Bytes that all textures of a scene may take: a quarter of this machine's memory.
 double textureMemoryBudget();

@@ -1,0 +1,536 @@
+#include "gltf/gltf_loader.h"
+
+#include "gltf/gltf_accessors.h"
+#include "core/system.h"
+#include "scene/scene_limits.h"
+#include "scene/text_parser.h"
+#include "texture/texture_io.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+namespace pt {
+namespace {
+
+constexpr const char* kSupportedExtensions[] = {
+    "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_lights_punctual", "KHR_mesh_quantization",
+    "KHR_texture_transform",
+};
+
+// Lumens per watt: glTF lights are photometric (candela, lux), pt's radiometric. Blender's glTF
+// importer divides by the same 683, so a scene is as bright in both.
+constexpr double kLumensPerWatt = 683.0;
+
+using tinygltf::Model;
+
+// Images are not decoded by tinygltf (its stb build is not ours): the loader callback keeps their
+// bytes, and OpenImageIO decodes the ones a material uses.
+bool keepImageBytes(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+                    const unsigned char* bytes, int size, void* user) {
+    auto* kept = static_cast<std::vector<std::vector<unsigned char>>*>(user);
+    if (index < 0 || size < 0 || index > (1 << 24)) return false;
+    if (size_t(index) >= kept->size()) kept->resize(size_t(index) + 1);
+    (*kept)[size_t(index)].assign(bytes, bytes + size);
+    image->as_is = true;
+    return true;
+}
+
+glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& what) {
+    if (n.matrix.size() == 16) {
+        glm::dmat4 m;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) m[c][r] = n.matrix[size_t(c * 4 + r)]; // column-major, as glm
+        return m;
+    }
+    if (!n.matrix.empty()) throw LoadError(what + ": matrix has " + std::to_string(n.matrix.size()) + " values; expected 16");
+    glm::dmat4 m(1.0);
+    if (!n.translation.empty()) {
+        if (n.translation.size() != 3) throw LoadError(what + ": translation needs 3 values");
+        m = glm::translate(m, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
+    }
+    if (!n.rotation.empty()) {
+        if (n.rotation.size() != 4) throw LoadError(what + ": rotation needs 4 values (a quaternion x, y, z, w)");
+        glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);
+        double len = glm::length(q);
+        if (!(len > 0.0) || !std::isfinite(len)) throw LoadError(what + ": rotation is not a unit quaternion");
+        m = m * glm::mat4_cast(q / len);
+    }
+    if (!n.scale.empty()) {
+        if (n.scale.size() != 3) throw LoadError(what + ": scale needs 3 values");
+        m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
+    }
+    return m;
+}
+
+Spectrum colorOf(const std::vector<double>& v, Spectrum fallback) {
+    return v.size() >= 3 ? Spectrum(float(v[0]), float(v[1]), float(v[2])) : fallback;
+}
+
+class GltfReader {
+public:
+    GltfReader(const std::string& path, const Model& model, std::vector<std::vector<unsigned char>>& images, Scene& scene,
+               Warnings& warnings)
+        : path_(path), model_(model), images_(images), scene_(scene), warnings_(warnings) {}
+
+    void read() {
+        materialOf_.assign(model_.materials.size(), ~0u);
+        if (model_.scenes.empty()) {
+            // No scene: every root node, as viewers do.
+            std::vector<char> child(model_.nodes.size(), 0);
+            for (const auto& n : model_.nodes)
+                for (int c : n.children)
+                    if (c >= 0 && size_t(c) < child.size()) child[size_t(c)] = 1;
+            for (size_t i = 0; i < model_.nodes.size(); ++i)
+                if (!child[i]) visitTree(int(i));
+        } else {
+            int s = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+            if (size_t(s) >= model_.scenes.size())
+                throw LoadError(path_ + ": scene " + std::to_string(s) + " does not exist");
+            for (int root : model_.scenes[size_t(s)].nodes) visitTree(root);
+        }
+        if (skippedPrimitives_ > 0)
+            warnings_.add(path_ + ": " + std::to_string(skippedPrimitives_) +
+                          " point or line primitives skipped; pt renders triangles");
+    }
+
+private:
+    // Depth first, without recursion (a chain of a million nodes must not exhaust the stack). A
+    // node reached twice is a cycle or a node with two parents, both invalid: refused.
+    void visitTree(int root) {
+        std::vector<std::pair<int, glm::dmat4>> stack{{root, glm::dmat4(1.0)}};
+        visited_.resize(model_.nodes.size(), 0);
+        while (!stack.empty()) {
+            auto [index, parent] = stack.back();
+            stack.pop_back();
+            std::string what = path_ + ": node " + std::to_string(index);
+            if (index < 0 || size_t(index) >= model_.nodes.size())
+                throw LoadError(what + " does not exist (the file has " + std::to_string(model_.nodes.size()) + ")");
+            if (visited_[size_t(index)])
+                throw LoadError(what + " is reached twice in the node hierarchy (a cycle, or two parents)");
+            visited_[size_t(index)] = 1;
+            const tinygltf::Node& node = model_.nodes[size_t(index)];
+            glm::dmat4 world = parent * localTransform(node, what);
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r)
+                    if (!std::isfinite(world[c][r])) throw LoadError(what + ": its transform is not finite");
+            if (node.mesh >= 0) addMesh(node.mesh, world, what);
+            if (node.camera >= 0) addCamera(node.camera, world, what);
+            auto light = node.extensions.find("KHR_lights_punctual");
+            if (light != node.extensions.end() && light->second.Has("light"))
+                addLight(light->second.Get("light").GetNumberAsInt(), world, what);
+            for (int c : node.children) stack.emplace_back(c, world);
+        }
+    }
+
+    void addMesh(int meshIndex, const glm::dmat4& world, const std::string& where) {
+        if (size_t(meshIndex) >= model_.meshes.size())
+            throw LoadError(where + ": mesh " + std::to_string(meshIndex) + " does not exist");
+        const tinygltf::Mesh& mesh = model_.meshes[size_t(meshIndex)];
+        for (size_t p = 0; p < mesh.primitives.size(); ++p)
+            addPrimitive(mesh.primitives[p], world,
+                         path_ + ": mesh " + std::to_string(meshIndex) + " primitive " + std::to_string(p));
+    }
+
+    int attribute(const tinygltf::Primitive& prim, const char* name) const {
+        auto it = prim.attributes.find(name);
+        return it == prim.attributes.end() ? -1 : it->second;
+    }
+
+    void addPrimitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& what) {
+        int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+        if (mode <= TINYGLTF_MODE_LINE_STRIP) {
+            ++skippedPrimitives_;
+            return;
+        }
+        if (mode > TINYGLTF_MODE_TRIANGLE_FAN) throw LoadError(what + ": unknown mode " + std::to_string(mode));
+        const int F = TINYGLTF_COMPONENT_TYPE_FLOAT, B = TINYGLTF_COMPONENT_TYPE_BYTE,
+                  UB = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, S = TINYGLTF_COMPONENT_TYPE_SHORT,
+                  US = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+        int pos = attribute(prim, "POSITION");
+        if (pos < 0) throw LoadError(what + ": has no POSITION attribute");
+        // KHR_mesh_quantization allows integer positions, normals and texture coordinates.
+        std::vector<float> p = gltf::readFloats(model_, pos, 3, {F, B, UB, S, US}, what + " POSITION");
+        size_t n = p.size() / 3;
+        std::vector<float> normals, uvs;
+        if (int a = attribute(prim, "NORMAL"); a >= 0) normals = gltf::readFloats(model_, a, 3, {F, B, S}, what + " NORMAL");
+        if (int a = attribute(prim, "TEXCOORD_0"); a >= 0) uvs = gltf::readFloats(model_, a, 2, {F, B, UB, S, US}, what + " TEXCOORD_0");
+        if ((!normals.empty() && normals.size() != p.size()) || (!uvs.empty() && uvs.size() / 2 != n))
+            throw LoadError(what + ": its attributes have different counts (POSITION has " + std::to_string(n) + ")");
+        if (attribute(prim, "COLOR_0") >= 0 && !warnedColor_) {
+            warnings_.add(what + ": COLOR_0 is ignored (vertex colours are not supported)");
+            warnedColor_ = true;
+        }
+
+        std::vector<uint32_t> index;
+        if (prim.indices >= 0) index = gltf::readIndices(model_, prim.indices, n, what + " indices");
+        else {
+            index.resize(n);
+            for (size_t i = 0; i < n; ++i) index[i] = uint32_t(i);
+        }
+        std::vector<glm::uvec3> tris;
+        if (mode == TINYGLTF_MODE_TRIANGLES) {
+            for (size_t i = 0; i + 2 < index.size(); i += 3) tris.emplace_back(index[i], index[i + 1], index[i + 2]);
+        } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            for (size_t i = 0; i + 2 < index.size(); ++i) // every other triangle turned to keep the winding
+                tris.push_back(i % 2 ? glm::uvec3(index[i + 1], index[i], index[i + 2])
+                                     : glm::uvec3(index[i], index[i + 1], index[i + 2]));
+        } else {
+            for (size_t i = 1; i + 1 < index.size(); ++i) tris.emplace_back(index[0], index[i], index[i + 1]);
+        }
+        if (scene_.triPositions.size() + tris.size() > kMaxTriangles)
+            throw LoadError(what + ": the scene passes " + std::to_string(kMaxTriangles) + " triangles");
+
+        // Positions to world space; normals by the inverse transpose. A mirroring transform turns
+        // the winding around, so each triangle is turned back to keep it counter-clockwise.
+        glm::dmat3 linear(world), normalMatrix = glm::transpose(glm::inverse(linear));
+        bool mirrored = glm::determinant(linear) < 0.0;
+        uint32_t base = uint32_t(scene_.positions.size());
+        for (size_t i = 0; i < n; ++i) {
+            glm::dvec4 q = world * glm::dvec4(p[3 * i], p[3 * i + 1], p[3 * i + 2], 1.0);
+            Vec3 v(float(q.x), float(q.y), float(q.z));
+            if (!(std::abs(v.x) <= kMaxCoordinate && std::abs(v.y) <= kMaxCoordinate && std::abs(v.z) <= kMaxCoordinate))
+                throw LoadError(what + ": vertex " + std::to_string(i) + " lies beyond 1e12 once transformed, "
+                                "the largest coordinate pt renders correctly");
+            scene_.positions.push_back(v);
+        }
+        int normalBase = -1, uvBase = -1;
+        if (!normals.empty()) {
+            normalBase = int(scene_.normals.size());
+            for (size_t i = 0; i < n; ++i) {
+                glm::dvec3 m = normalMatrix * glm::dvec3(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
+                scene_.normals.push_back(safeNormalize(Vec3(float(m.x), float(m.y), float(m.z))));
+            }
+            if (!anyNormals_) scene_.triNormals.assign(scene_.triPositions.size(), glm::ivec3(-1));
+            anyNormals_ = true;
+        }
+        if (!uvs.empty()) {
+            uvBase = int(scene_.uvs.size());
+            for (size_t i = 0; i < n; ++i) scene_.uvs.emplace_back(uvs[2 * i], 1.0f - uvs[2 * i + 1]); // glTF's v runs down
+            if (!anyUvs_) scene_.triUvs.assign(scene_.triPositions.size(), glm::ivec3(-1));
+            anyUvs_ = true;
+        }
+        uint32_t material = materialFor(prim.material, what);
+        for (glm::uvec3 t : tris) {
+            if (mirrored) std::swap(t.y, t.z);
+            scene_.triPositions.push_back(t + base);
+            // The per-corner index arrays exist once any primitive has normals or uvs (-1 elsewhere).
+            if (anyNormals_) scene_.triNormals.push_back(normalBase < 0 ? glm::ivec3(-1) : glm::ivec3(t) + normalBase);
+            if (anyUvs_) scene_.triUvs.push_back(uvBase < 0 ? glm::ivec3(-1) : glm::ivec3(t) + uvBase);
+            scene_.triMaterial.push_back(material);
+        }
+    }
+
+    // The scene's texture for glTF texture `index`, decoded as colour (sRGB) or data.
+    int texture(int index, bool colour, const std::string& what) {
+        if (index < 0 || size_t(index) >= model_.textures.size())
+            throw LoadError(what + ": texture " + std::to_string(index) + " does not exist");
+        int image = model_.textures[size_t(index)].source;
+        if (image < 0 || size_t(image) >= model_.images.size())
+            throw LoadError(what + ": texture " + std::to_string(index) + " has no image (source " + std::to_string(image) + ")");
+        auto key = std::make_pair(image, colour);
+        if (auto it = decoded_.find(key); it != decoded_.end()) return it->second;
+        const tinygltf::Image& img = model_.images[size_t(image)];
+        std::string name = img.uri.empty() || img.uri.rfind("data:", 0) == 0
+                               ? path_ + " image " + std::to_string(image)
+                               : (std::filesystem::path(path_).parent_path() / img.uri).string();
+        std::string format = img.mimeType == "image/jpeg" ? ".jpg" : img.mimeType == "image/png" ? ".png" : "";
+        if (format.empty()) {
+            std::string ext = std::filesystem::path(img.uri).extension().string();
+            format = ext.empty() ? ".png" : ext;
+        }
+        if (size_t(image) >= images_.size() || images_[size_t(image)].empty())
+            throw LoadError(what + ": image " + std::to_string(image) + " has no data");
+        Texture t;
+        std::string error;
+        bool tooLarge;
+        if (!readTextureFromMemory(images_[size_t(image)], name, format, colour, t, error,
+                                   textureMemoryBudget() - scene_.textures->bytes(), tooLarge))
+            throw LoadError(what + ": " + error);
+        int cached = scene_.textures->add(std::move(t));
+        decoded_[key] = cached;
+        return cached;
+    }
+
+    // A texture reference with its sampler's wrap mode and KHR_texture_transform. glTF's uv has v
+    // down the image and pt's up, so a transform u' = o + s u becomes, in pt's v = 1 - v_gltf,
+    // v' = (1 - o.y - s.y) + s.y v.
+    TextureMap textureMap(int index, int texCoord, const tinygltf::ExtensionMap& extensions, bool colour,
+                          const std::string& what) {
+        TextureMap map;
+        map.texture = texture(index, colour, what);
+        const tinygltf::Texture& tex = model_.textures[size_t(index)];
+        if (tex.sampler >= 0 && size_t(tex.sampler) < model_.samplers.size()) {
+            const tinygltf::Sampler& s = model_.samplers[size_t(tex.sampler)];
+            map.clamp = s.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE || s.wrapT == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+            if ((s.wrapS == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT || s.wrapT == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) &&
+                !warnedMirror_) {
+                warnings_.add(what + ": MIRRORED_REPEAT wrapping is taken as REPEAT");
+                warnedMirror_ = true;
+            }
+        }
+        Vec2 offset(0.0f), scale(1.0f);
+        auto t = extensions.find("KHR_texture_transform");
+        if (t != extensions.end()) {
+            const tinygltf::Value& v = t->second;
+            if (v.Has("offset") && v.Get("offset").ArrayLen() == 2)
+                offset = Vec2(float(v.Get("offset").Get(0).GetNumberAsDouble()), float(v.Get("offset").Get(1).GetNumberAsDouble()));
+            if (v.Has("scale") && v.Get("scale").ArrayLen() == 2)
+                scale = Vec2(float(v.Get("scale").Get(0).GetNumberAsDouble()), float(v.Get("scale").Get(1).GetNumberAsDouble()));
+            if (v.Has("rotation") && v.Get("rotation").GetNumberAsDouble() != 0.0)
+                warnings_.add(what + ": KHR_texture_transform rotation is ignored (offset and scale are applied)");
+            if (v.Has("texCoord")) texCoord = v.Get("texCoord").GetNumberAsInt();
+        }
+        if (texCoord != 0 && !warnedTexCoord_) {
+            warnings_.add(what + ": TEXCOORD_" + std::to_string(texCoord) + " is not supported; TEXCOORD_0 is used");
+            warnedTexCoord_ = true;
+        }
+        if (!std::isfinite(offset.x) || !std::isfinite(offset.y) || !std::isfinite(scale.x) || !std::isfinite(scale.y))
+            throw LoadError(what + ": KHR_texture_transform has a value that is not finite");
+        map.scale = scale;
+        map.offset = Vec2(offset.x, 1.0f - offset.y - scale.y);
+        return map;
+    }
+
+    // A 1 x 1 data texture of value 1, so that a constant coverage goes through the cutout path.
+    int constantTexture() {
+        if (constant_ < 0) {
+            Texture t;
+            t.path = path_ + " (constant coverage)";
+            t.colour = false;
+            t.width = t.height = t.channels = 1;
+            t.texels = {1.0f};
+            constant_ = scene_.textures->add(std::move(t));
+        }
+        return constant_;
+    }
+
+    uint32_t materialFor(int index, const std::string& where) {
+        if (index < 0) {
+            if (defaultMaterial_ == ~0u) {
+                // The specification's default material: white, metallic 1, roughness 1.
+                Material m;
+                m.name = "default";
+                m.model = MaterialModel::MetalRough;
+                m.kd = Spectrum(1.0f);
+                m.metallic = 1.0f;
+                m.roughness = 1.0f;
+                m.eta = 1.5f;
+                defaultMaterial_ = uint32_t(scene_.materials.size());
+                scene_.materials.push_back(m);
+            }
+            return defaultMaterial_;
+        }
+        if (size_t(index) >= model_.materials.size())
+            throw LoadError(where + ": material " + std::to_string(index) + " does not exist");
+        if (materialOf_[size_t(index)] != ~0u) return materialOf_[size_t(index)];
+        const tinygltf::Material& g = model_.materials[size_t(index)];
+        std::string what = path_ + ": material " + std::to_string(index) + (g.name.empty() ? "" : " \"" + g.name + "\"");
+        const auto& pbr = g.pbrMetallicRoughness;
+        Material m;
+        m.name = g.name.empty() ? "material " + std::to_string(index) : g.name;
+        m.model = MaterialModel::MetalRough;
+        m.kd = colorOf(pbr.baseColorFactor, Spectrum(1.0f));
+        float opacity = pbr.baseColorFactor.size() == 4 ? float(pbr.baseColorFactor[3]) : 1.0f;
+        float metallic = float(pbr.metallicFactor), roughness = float(pbr.roughnessFactor);
+        auto unit = [&](float v, const char* name) {
+            if (!(v >= 0.0f && v <= 1.0f)) throw LoadError(what + ": " + name + " " + shortNumber(v) + " is outside [0, 1]");
+            return v;
+        };
+        for (int c = 0; c < 3; ++c) unit(m.kd[c], "baseColorFactor");
+        m.metallic = unit(metallic, "metallicFactor");
+        m.roughness = sqr(unit(roughness, "roughnessFactor")); // alpha
+        unit(opacity, "baseColorFactor's alpha");
+        m.eta = 1.5f;
+        if (auto ior = g.extensions.find("KHR_materials_ior"); ior != g.extensions.end() && ior->second.Has("ior")) {
+            m.eta = float(ior->second.Get("ior").GetNumberAsDouble());
+            if (!(m.eta >= 1.0f && m.eta <= 10.0f)) throw LoadError(what + ": KHR_materials_ior ior " + shortNumber(m.eta) + " is outside [1, 10]");
+        }
+        if (pbr.baseColorTexture.index >= 0)
+            m.kdMap = textureMap(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions,
+                                 true, what + " baseColorTexture");
+        if (pbr.metallicRoughnessTexture.index >= 0) {
+            const auto& info = pbr.metallicRoughnessTexture;
+            m.roughnessMap = textureMap(info.index, info.texCoord, info.extensions, false, what + " metallicRoughnessTexture");
+            m.roughnessMap.channel = TextureChannel::G;
+            m.metallicMap = m.roughnessMap;
+            m.metallicMap.channel = TextureChannel::B;
+        }
+        if (g.normalTexture.index >= 0) {
+            m.normalMap = textureMap(g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions, false,
+                                     what + " normalTexture");
+            m.normalMap.bumpScale = float(g.normalTexture.scale);
+        }
+        float strength = 1.0f;
+        if (auto e = g.extensions.find("KHR_materials_emissive_strength");
+            e != g.extensions.end() && e->second.Has("emissiveStrength"))
+            strength = float(e->second.Get("emissiveStrength").GetNumberAsDouble());
+        if (!(strength >= 0.0f && strength <= 1e12f)) throw LoadError(what + ": emissiveStrength " + shortNumber(strength) + " is out of range");
+        m.emission = colorOf(g.emissiveFactor, Spectrum(0.0f)) * strength;
+        if (!(m.emission.x >= 0.0f && m.emission.y >= 0.0f && m.emission.z >= 0.0f) || !isFinite(m.emission))
+            throw LoadError(what + ": emissiveFactor must be finite and not negative");
+        if (maxComponent(m.emission) > kMaxRadiance)
+            throw LoadError(what + ": emission " + shortNumber(maxComponent(m.emission)) +
+                            " is beyond 1e18, where samples and their variance overflow float");
+        if (g.emissiveTexture.index >= 0 && m.isEmissive())
+            m.emissionMap = textureMap(g.emissiveTexture.index, g.emissiveTexture.texCoord, g.emissiveTexture.extensions,
+                                       true, what + " emissiveTexture");
+
+        // Coverage: MASK cuts at alphaCutoff, BLEND is stochastic (rays pass 1 - alpha of the time).
+        std::string mode = g.alphaMode.empty() ? "OPAQUE" : g.alphaMode;
+        if (mode == "MASK" || mode == "BLEND") {
+            m.alpha = opacity;
+            if (mode == "MASK") m.alphaCutoff = float(g.alphaCutoff);
+            if (pbr.baseColorTexture.index >= 0 &&
+                (*scene_.textures)[texture(pbr.baseColorTexture.index, false, what + " baseColorTexture")].hasAlpha()) {
+                m.alphaMap = textureMap(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                        pbr.baseColorTexture.extensions, false, what + " baseColorTexture");
+                m.alphaMap.channel = TextureChannel::Alpha;
+            } else if (mode == "BLEND" ? opacity < 1.0f : opacity < m.alphaCutoff) {
+                m.alphaMap.texture = constantTexture();
+            }
+        } else if (mode != "OPAQUE") {
+            throw LoadError(what + ": alphaMode \"" + mode + "\"; expected OPAQUE, MASK or BLEND");
+        }
+        materialOf_[size_t(index)] = uint32_t(scene_.materials.size());
+        scene_.materials.push_back(m);
+        return materialOf_[size_t(index)];
+    }
+
+    void addCamera(int index, const glm::dmat4& world, const std::string& where) {
+        if (size_t(index) >= model_.cameras.size())
+            throw LoadError(where + ": camera " + std::to_string(index) + " does not exist");
+        const tinygltf::Camera& g = model_.cameras[size_t(index)];
+        std::string what = path_ + ": camera " + std::to_string(index);
+        Camera c;
+        c.name = g.name.empty() ? "camera " + std::to_string(index) : g.name;
+        glm::dvec3 eye(world * glm::dvec4(0, 0, 0, 1)), ahead(world * glm::dvec4(0, 0, -1, 0)), up(world * glm::dvec4(0, 1, 0, 0));
+        if (!(glm::length(ahead) > 0.0) || !(glm::length(glm::cross(ahead, up)) > 0.0))
+            throw LoadError(what + ": its node's transform collapses the view direction");
+        c.position = Vec3(eye);
+        c.target = Vec3(eye + glm::normalize(ahead));
+        c.up = Vec3(glm::normalize(up));
+        if (g.type == "perspective") {
+            double fov = g.perspective.yfov * 180.0 / M_PI;
+            if (!(fov > 0.0 && fov < 180.0)) throw LoadError(what + ": yfov " + shortNumber(g.perspective.yfov) + " must be in (0, pi)");
+            c.fovY = float(fov);
+            if (g.perspective.aspectRatio > 0.0) c.aspect = float(g.perspective.aspectRatio);
+        } else if (g.type == "orthographic") {
+            double ymag = std::abs(g.orthographic.ymag), xmag = std::abs(g.orthographic.xmag);
+            if (!(ymag > 0.0 && xmag > 0.0) || !std::isfinite(ymag) || !std::isfinite(xmag))
+                throw LoadError(what + ": xmag and ymag must be finite and not zero");
+            c.orthoHalfHeight = float(ymag);
+            c.aspect = float(xmag / ymag);
+        } else {
+            throw LoadError(what + ": type \"" + g.type + "\"; expected perspective or orthographic");
+        }
+        scene_.cameras.push_back(c);
+    }
+
+    void addLight(int index, const glm::dmat4& world, const std::string& where) {
+        if (index < 0 || size_t(index) >= model_.lights.size())
+            throw LoadError(where + ": light " + std::to_string(index) + " does not exist");
+        const tinygltf::Light& g = model_.lights[size_t(index)];
+        std::string what = path_ + ": light " + std::to_string(index) + (g.name.empty() ? "" : " \"" + g.name + "\"");
+        Spectrum color = colorOf(g.color, Spectrum(1.0f));
+        if (!(g.intensity >= 0.0 && g.intensity < 1e15) || !(color.x >= 0 && color.y >= 0 && color.z >= 0) || !isFinite(color))
+            throw LoadError(what + ": intensity and color must be finite and not negative");
+        if (!(g.range >= 0.0) || !std::isfinite(g.range)) throw LoadError(what + ": range must be positive");
+        glm::dvec3 at(world * glm::dvec4(0, 0, 0, 1)), ahead(world * glm::dvec4(0, 0, -1, 0));
+        if (g.type == "directional") {
+            if (!(glm::length(ahead) > 0.0)) throw LoadError(what + ": its node's transform collapses its direction");
+            DirectionalLight d;
+            d.name = g.name;
+            d.direction = Vec3(glm::normalize(-ahead)); // towards the light
+            d.irradiance = color * float(g.intensity / kLumensPerWatt); // lux to W/m^2
+            scene_.directionalLights.push_back(d);
+            return;
+        }
+        SphereLight l;
+        l.name = g.name.empty() ? "light " + std::to_string(index) : g.name;
+        l.center = Vec3(at);
+        l.radius = 0.0f;
+        l.intensity = color * float(g.intensity / kLumensPerWatt); // candela to W/sr
+        l.range = float(g.range);
+        l.source = what + ": ";
+        if (g.type == "spot") {
+            double inner = g.spot.innerConeAngle, outer = g.spot.outerConeAngle;
+            if (!(inner >= 0.0 && inner < outer && outer <= M_PI / 2))
+                throw LoadError(what + ": spot cone angles must satisfy 0 <= inner < outer <= pi/2");
+            if (!(glm::length(ahead) > 0.0)) throw LoadError(what + ": its node's transform collapses its direction");
+            l.spotDirection = Vec3(glm::normalize(ahead));
+            l.cosInner = float(std::cos(inner));
+            l.cosOuter = float(std::cos(outer));
+        } else if (g.type != "point") {
+            throw LoadError(what + ": type \"" + g.type + "\"; expected point, spot or directional");
+        }
+        scene_.lights.push_back(l);
+    }
+
+    const std::string& path_;
+    const Model& model_;
+    std::vector<std::vector<unsigned char>>& images_;
+    Scene& scene_;
+    Warnings& warnings_;
+    std::vector<uint32_t> materialOf_;
+    uint32_t defaultMaterial_ = ~0u;
+    std::vector<char> visited_;
+    std::map<std::pair<int, bool>, int> decoded_;
+    int constant_ = -1;
+    size_t skippedPrimitives_ = 0;
+    bool warnedColor_ = false, warnedMirror_ = false, warnedTexCoord_ = false;
+    bool anyNormals_ = false, anyUvs_ = false;
+};
+
+} // namespace
+
+bool gltfExtensionSupported(const std::string& name) {
+    return std::find(std::begin(kSupportedExtensions), std::end(kSupportedExtensions), name) != std::end(kSupportedExtensions);
+}
+
+Scene loadGltf(const std::string& path, Warnings& warnings) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw LoadError(path + ": " + (std::filesystem::exists(path, ec) ? "not a regular file" : "cannot open: no such file"));
+    auto size = std::filesystem::file_size(path, ec);
+    if (!ec && double(size) > 0.5 * physicalMemoryBytes())
+        throw LoadError(path + ": " + std::to_string(size) + " bytes, more than half this machine's memory");
+
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    std::vector<std::vector<unsigned char>> images;
+    loader.SetImageLoader(keepImageBytes, &images);
+    std::string err, warn;
+    bool binary = toLower(std::filesystem::path(path).extension().string()) == ".glb";
+    bool ok = false;
+    try {
+        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path) : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    } catch (const std::exception& e) {
+        throw LoadError(path + ": not a valid glTF file: " + e.what());
+    }
+    if (!ok) {
+        while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
+        throw LoadError(path + ": " + (err.empty() ? "cannot be read as glTF" : err));
+    }
+    for (const std::string& e : model.extensionsRequired)
+        if (!gltfExtensionSupported(e))
+            throw LoadError(path + ": requires the extension " + e + ", which pt does not support");
+    for (const std::string& e : model.extensionsUsed)
+        if (!gltfExtensionSupported(e))
+            warnings.add(path + ": uses the extension " + e + ", which pt ignores");
+
+    Scene scene;
+    scene.path = path;
+    scene.sources.push_back(path);
+    for (const tinygltf::Buffer& b : model.buffers)
+        if (!b.uri.empty() && b.uri.rfind("data:", 0) != 0)
+            scene.sources.push_back((std::filesystem::path(path).parent_path() / b.uri).string());
+    GltfReader(path, model, images, scene, warnings).read();
+    return scene;
+}
+
+} // namespace pt
