@@ -6,15 +6,19 @@
 #include "material/lab_bsdf.h"
 #include "material/metal_rough_bsdf.h"
 
+#include <type_traits>
+
 namespace pt {
 
 struct Bsdf {
     enum class Model : uint8_t { Lab, MetalRough };
-    Model model = Model::Lab;
-    LabBsdf lab;
-    MetalRoughBsdf metalRough;
+    Model model;
+    union { // both are plain values (trivially copyable): only the one `model` names is set
+        LabBsdf lab;
+        MetalRoughBsdf metalRough;
+    };
 
-    Bsdf() = default;
+    Bsdf() : model(Model::Lab), lab() {}
     Bsdf(const LabBsdf& b) : model(Model::Lab), lab(b) {}
     Bsdf(const MetalRoughBsdf& b) : model(Model::MetalRough), metalRough(b) {}
 
@@ -39,5 +43,7 @@ struct Bsdf {
         return model == Model::Lab ? lab.sample(wo, u1, u2, out) : metalRough.sample(wo, u1, u2, out);
     }
 };
+
+static_assert(std::is_trivially_copyable_v<LabBsdf> && std::is_trivially_copyable_v<MetalRoughBsdf>);
 
 } // namespace pt
