@@ -4,6 +4,7 @@
 #include "material/metal_rough_bsdf.h"
 #include "sampling/rng.h"
 #include "tests/chi_square.h"
+#include "tests/gltf_brdf_reference.h"
 
 #include <gtest/gtest.h>
 
@@ -15,26 +16,6 @@ namespace {
 Vec3 direction(float cosTheta, float phi) {
     float s = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
     return Vec3(s * std::cos(phi), s * std::sin(phi), cosTheta);
-}
-
-// The specification's Appendix B, as it writes it: D and the visibility term V = G2 / (4 NdotL
-// NdotV) in their textbook forms, Schlick's Fresnel at VdotH, the mix by metallic. Returns f.
-Spectrum specBrdf(const Spectrum& base, float metallic, float roughness, const Vec3& v, const Vec3& l) {
-    double a = double(roughness) * roughness, a2 = a * a;
-    Vec3 h = glm::normalize(v + l);
-    double nl = l.z, nv = v.z, nh = h.z, vh = glm::dot(v, h);
-    double d = a2 / (M_PI * std::pow(nh * nh * (a2 - 1.0) + 1.0, 2.0));
-    double vis = 0.5 / (nl * std::sqrt(nv * nv * (1.0 - a2) + a2) + nv * std::sqrt(nl * nl * (1.0 - a2) + a2));
-    double specular = vis * d;
-    double w = std::pow(1.0 - std::abs(vh), 5.0);
-    Spectrum out;
-    for (int c = 0; c < 3; ++c) {
-        double fd = 0.04 + 0.96 * w;
-        double dielectric = (1.0 - fd) * base[c] / M_PI + fd * specular;
-        double fm = base[c] + (1.0 - base[c]) * w;
-        out[c] = float((1.0 - metallic) * dielectric + metallic * fm * specular);
-    }
-    return out;
 }
 
 TEST(MetalRoughBsdf, MatchesTheSpecification) {

@@ -136,7 +136,7 @@ const tinygltf::Accessor& accessorAt(const tinygltf::Model& model, int index, co
 } // namespace
 
 std::string accessorName(int accessor, const std::string& what) {
-    return "accessor " + std::to_string(accessor) + " (" + what + ")";
+    return what + ", accessor " + std::to_string(accessor);
 }
 
 std::vector<float> readFloats(const tinygltf::Model& model, int index, int components, std::initializer_list<int> types,

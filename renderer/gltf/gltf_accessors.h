@@ -18,7 +18,7 @@ namespace pt::gltf {
 
 // The accessor's elements as floats, `components` per element (1 for SCALAR, 2 for VEC2, ...).
 // `types` lists the component types the attribute may have (TINYGLTF_COMPONENT_TYPE_*); `what`
-// names the attribute for messages ("mesh 2 primitive 0 POSITION"). Throws LoadError.
+// names the attribute for messages ("scene.gltf: mesh 2 primitive 0 POSITION"). Throws LoadError.
 std::vector<float> readFloats(const tinygltf::Model& model, int accessor, int components,
                               std::initializer_list<int> types, const std::string& what);
 
@@ -26,7 +26,7 @@ std::vector<float> readFloats(const tinygltf::Model& model, int accessor, int co
 std::vector<uint32_t> readIndices(const tinygltf::Model& model, int accessor, size_t vertexCount,
                                   const std::string& what);
 
-// "accessor 3 (mesh 2 primitive 0 POSITION)", for messages.
+// "scene.gltf: mesh 2 primitive 0 POSITION, accessor 3", for messages.
 std::string accessorName(int accessor, const std::string& what);
 
 } // namespace pt::gltf

@@ -244,7 +244,7 @@ private:
             format = ext.empty() ? ".png" : ext;
         }
         if (size_t(image) >= images_.size() || images_[size_t(image)].empty())
-            throw LoadError(what + ": image " + std::to_string(image) + " has no data");
+            throw LoadError(what + ": image " + std::to_string(image) + " (" + name + ") was not found or is empty");
         Texture t;
         std::string error;
         bool tooLarge;

@@ -99,7 +99,11 @@ static bool isGltf(const std::string& path) {
 }
 
 void addDefaultLighting(Scene& scene, Warnings& warnings) {
-    if (!isGltf(scene.path) || scene.environment.map || !scene.lights.empty() || !scene.directionalLights.empty()) return;
+    if (!isGltf(scene.path) || scene.environment.map) return;
+    if (!scene.lights.empty() || !scene.directionalLights.empty()) {
+        scene.environment.sky = scene.environment.ground = Spectrum(0.0f); // the file's lights alone
+        return;
+    }
     auto white = std::make_shared<EnvironmentMap>();
     white->path = "(uniform white)";
     white->width = 4;

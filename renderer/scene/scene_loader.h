@@ -20,7 +20,8 @@ void completeScene(Scene& scene, Warnings& warnings);
 // uniform white environment of radiance 1, with a warning. It shows base colours as they are, as
 // a grey-card studio would, with soft contact shadows and no light direction to prefer; emissive
 // surfaces still glow, and inside a closed room the environment never reaches. OBJ scenes keep
-// the lab's two-tone sky. Call after the command line has set the environment.
+// the lab's two-tone sky; a glTF scene with lights gets a black environment (its lights alone).
+// Call after the command line has set the environment.
 void addDefaultLighting(Scene& scene, Warnings& warnings);
 
 // Axis-aligned bounds of all triangle vertices and lights.

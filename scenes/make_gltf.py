@@ -1,0 +1,374 @@
+#!/usr/bin/python3
+"""Writes the small glTF 2.0 files of scenes/gltf/ that tests and golden cases use (issue 13).
+
+Every file is self-contained (buffers and images as data URIs) except bin_and_image.gltf, which
+keeps its .bin and .png beside it, as exported files do. Run from anywhere; rewrites the files.
+
+  spheres.gltf        five spheres from dielectric to metal, rough to smooth, on a ground plane,
+                      lit by a spot light and a directional light; a perspective camera
+  textured.gltf       a tile with every map: base colour (sRGB, with alpha for MASK), a
+                      metallic-roughness map (B metal stripes, G roughness ramp), a normal map of
+                      bumps, an emissive square; a point light
+  plane_lights.gltf   a white plane under a point light at height 2 (683 cd, so I = 1 W/sr), for
+                      the analytic test; variants with a spot, a directional light and a range
+  transforms.gltf     one mesh placed by two nodes (TRS, and a child of a rotated parent) and the
+  transforms_flat.gltf  same triangles written in world space: they must load equal; transforms.glb
+                      is the first as a binary container
+  alpha_modes.gltf    OPAQUE, MASK and BLEND quads in front of a red wall
+  cameras.gltf        a perspective camera with aspect ratio 2 and an orthographic one
+  bin_and_image.gltf  a quad whose buffer and base colour texture are files beside it
+"""
+import base64
+import json
+import math
+import os
+import struct
+import zlib
+
+HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gltf")
+
+FLOAT, USHORT, UINT = 5126, 5123, 5125
+
+
+class Gltf:
+    def __init__(self):
+        self.d = {"asset": {"version": "2.0", "generator": "pt scenes/make_gltf.py"}, "scenes": [{"nodes": []}],
+                  "scene": 0, "nodes": [], "meshes": [], "materials": [], "accessors": [], "bufferViews": [],
+                  "buffers": []}
+        self.blob = bytearray()
+
+    def view(self, data):
+        while len(self.blob) % 4:
+            self.blob.append(0)
+        self.d["bufferViews"].append({"buffer": 0, "byteOffset": len(self.blob), "byteLength": len(data)})
+        self.blob += data
+        return len(self.d["bufferViews"]) - 1
+
+    def accessor(self, values, kind, n):
+        """values: flat list; kind: 'VEC3', 'VEC2', 'SCALAR' (indices as UNSIGNED_INT)."""
+        if kind == "SCALAR":
+            data = struct.pack(f"<{len(values)}I", *values)
+            acc = {"componentType": UINT, "count": len(values), "type": "SCALAR"}
+        else:
+            data = struct.pack(f"<{len(values)}f", *values)
+            acc = {"componentType": FLOAT, "count": len(values) // n, "type": kind}
+            if kind == "VEC3":
+                xs = [values[i::3] for i in range(3)]
+                acc["min"], acc["max"] = [min(x) for x in xs], [max(x) for x in xs]
+        acc["bufferView"] = self.view(data)
+        self.d["accessors"].append(acc)
+        return len(self.d["accessors"]) - 1
+
+    def mesh(self, positions, normals, uvs, indices, material):
+        attrs = {"POSITION": self.accessor(positions, "VEC3", 3)}
+        if normals:
+            attrs["NORMAL"] = self.accessor(normals, "VEC3", 3)
+        if uvs:
+            attrs["TEXCOORD_0"] = self.accessor(uvs, "VEC2", 2)
+        prim = {"attributes": attrs, "indices": self.accessor(indices, "SCALAR", 1), "material": material}
+        self.d["meshes"].append({"primitives": [prim]})
+        return len(self.d["meshes"]) - 1
+
+    def material(self, **m):
+        self.d["materials"].append(m)
+        return len(self.d["materials"]) - 1
+
+    def node(self, root=True, **n):
+        self.d["nodes"].append(n)
+        i = len(self.d["nodes"]) - 1
+        if root:
+            self.d["scenes"][0]["nodes"].append(i)
+        return i
+
+    def image(self, png, sampler=None):
+        self.d.setdefault("images", []).append({"uri": "data:image/png;base64," + base64.b64encode(png).decode()})
+        tex = {"source": len(self.d["images"]) - 1}
+        if sampler is not None:
+            tex["sampler"] = sampler
+        self.d.setdefault("textures", []).append(tex)
+        return len(self.d["textures"]) - 1
+
+    def light(self, **l):
+        ext = self.d.setdefault("extensions", {}).setdefault("KHR_lights_punctual", {"lights": []})
+        ext["lights"].append(l)
+        used = self.d.setdefault("extensionsUsed", [])
+        if "KHR_lights_punctual" not in used:
+            used.append("KHR_lights_punctual")
+        return len(ext["lights"]) - 1
+
+    def camera(self, **c):
+        self.d.setdefault("cameras", []).append(c)
+        return len(self.d["cameras"]) - 1
+
+    def write_glb(self, name):
+        """The binary container: a JSON chunk and a BIN chunk, each padded to 4 bytes."""
+        self.d["buffers"] = [{"byteLength": len(self.blob)}]
+        text = json.dumps(self.d).encode()
+        text += b" " * (-len(text) % 4)
+        blob = bytes(self.blob) + b"\0" * (-len(self.blob) % 4)
+        body = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(blob), 0x004E4942) + blob
+        with open(os.path.join(HERE, name), "wb") as f:
+            f.write(struct.pack("<III", 0x46546C67, 2, 12 + len(body)) + body)
+
+    def write(self, name, external=False):
+        path = os.path.join(HERE, name)
+        if external:
+            bin_name = os.path.splitext(name)[0] + ".bin"
+            with open(os.path.join(HERE, bin_name), "wb") as f:
+                f.write(self.blob)
+            self.d["buffers"] = [{"uri": bin_name, "byteLength": len(self.blob)}]
+        else:
+            self.d["buffers"] = [{"uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(self.blob)).decode(),
+                                  "byteLength": len(self.blob)}]
+        with open(path, "w") as f:
+            json.dump(self.d, f, indent=1)
+            f.write("\n")
+
+
+def png(width, height, channels, pixel):
+    """An 8-bit PNG (channels 3 or 4) whose pixel (x, y) (row 0 at the top) is pixel(x, y)."""
+    raw = b"".join(b"\x00" + bytes(v for x in range(width) for v in pixel(x, y)) for y in range(height))
+    chunk = lambda kind, data: struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    color = 2 if channels == 3 else 6
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, color, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
+def quad(g, corners, normal, material, uv=True):
+    """Counter-clockwise corners seen from the side `normal` faces."""
+    pos = [c for p in corners for c in p]
+    nrm = list(normal) * 4
+    uvs = [0, 1, 1, 1, 1, 0, 0, 0] if uv else None  # glTF's v runs down the image
+    return g.mesh(pos, nrm, uvs, [0, 1, 2, 0, 2, 3], material)
+
+
+def sphere(g, radius, material, rings=24, segments=48):
+    """A UV sphere; spheres of one radius share their accessors, as exporters write instances."""
+    key = ("sphere", radius, rings, segments)
+    cache = g.__dict__.setdefault("shared", {})
+    if key not in cache:
+        pos, nrm, idx = [], [], []
+        for i in range(rings + 1):
+            t = math.pi * i / rings
+            for j in range(segments + 1):
+                p = 2 * math.pi * j / segments
+                n = (math.sin(t) * math.cos(p), math.cos(t), -math.sin(t) * math.sin(p))
+                nrm += n
+                pos += [radius * c for c in n]
+        for i in range(rings):
+            for j in range(segments):
+                a, b = i * (segments + 1) + j, (i + 1) * (segments + 1) + j
+                idx += [a, b, a + 1, a + 1, b, b + 1]
+        cache[key] = {"POSITION": g.accessor(pos, "VEC3", 3), "NORMAL": g.accessor(nrm, "VEC3", 3),
+                      "indices": g.accessor(idx, "SCALAR", 1)}
+    acc = cache[key]
+    prim = {"attributes": {"POSITION": acc["POSITION"], "NORMAL": acc["NORMAL"]}, "indices": acc["indices"],
+            "material": material}
+    g.d["meshes"].append({"primitives": [prim]})
+    return len(g.d["meshes"]) - 1
+
+
+def ground(g, size, material, y=0.0):
+    s = size
+    return quad(g, [(-s, y, s), (s, y, s), (s, y, -s), (-s, y, -s)], (0, 1, 0), material, uv=False)
+
+
+def look_at_quaternion(eye, target):
+    """Rotation taking the camera's -z to (target - eye), keeping +y up; (x, y, z, w)."""
+    f = [t - e for t, e in zip(target, eye)]
+    ln = math.sqrt(sum(c * c for c in f))
+    f = [c / ln for c in f]
+    r = [-f[2], 0.0, f[0]]  # f x up
+    lr = math.sqrt(sum(c * c for c in r))
+    r = [c / lr for c in r]
+    u = [r[1] * f[2] - r[2] * f[1], r[2] * f[0] - r[0] * f[2], r[0] * f[1] - r[1] * f[0]]
+    m = [[r[0], u[0], -f[0]], [r[1], u[1], -f[1]], [r[2], u[2], -f[2]]]  # columns r, u, -f
+    w = math.sqrt(max(0.0, 1 + m[0][0] + m[1][1] + m[2][2])) / 2
+    x = (m[2][1] - m[1][2]) / (4 * w)
+    y = (m[0][2] - m[2][0]) / (4 * w)
+    z = (m[1][0] - m[0][1]) / (4 * w)
+    return [x, y, z, w]
+
+
+def camera_node(g, eye, target, yfov_deg=40.0, aspect=None, name="Front"):
+    persp = {"yfov": math.radians(yfov_deg), "znear": 0.01}
+    if aspect:
+        persp["aspectRatio"] = aspect
+    c = g.camera(type="perspective", perspective=persp, name=name)
+    return g.node(camera=c, translation=list(eye), rotation=look_at_quaternion(eye, target), name=name)
+
+
+def spheres():
+    g = Gltf()
+    floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0.0,
+                                                            "roughnessFactor": 0.9})
+    g.node(mesh=ground(g, 20, floor), name="Ground")
+    looks = [("RedPlastic", [0.8, 0.1, 0.1], 0.0, 0.3), ("WhiteMatte", [0.8, 0.8, 0.8], 0.0, 1.0),
+             ("Gold", [1.0, 0.78, 0.34], 1.0, 0.25), ("MirrorSteel", [0.9, 0.9, 0.9], 1.0, 0.0),
+             ("HalfMetal", [0.3, 0.6, 0.9], 0.5, 0.5)]
+    for k, (name, color, metal, rough) in enumerate(looks):
+        m = g.material(name=name, pbrMetallicRoughness={"baseColorFactor": color + [1], "metallicFactor": metal,
+                                                          "roughnessFactor": rough})
+        g.node(mesh=sphere(g, 0.45, m), translation=[-2.0 + k, 0.45, 0.0], name=name)
+    spot = g.light(type="spot", color=[1.0, 0.9, 0.8], intensity=2500.0,
+                   spot={"innerConeAngle": 0.3, "outerConeAngle": 0.6}, name="Spot")
+    g.node(extensions={"KHR_lights_punctual": {"light": spot}}, translation=[-1.5, 4.0, 2.5],
+           rotation=look_at_quaternion([-1.5, 4.0, 2.5], [0.0, 0.0, 0.0]), name="SpotNode")
+    sun = g.light(type="directional", color=[0.7, 0.8, 1.0], intensity=300.0, name="Sun")
+    g.node(extensions={"KHR_lights_punctual": {"light": sun}}, rotation=look_at_quaternion([0, 0, 0], [1.0, -2.0, -1.5]),
+           name="SunNode")
+    camera_node(g, [0.0, 1.6, 5.0], [0.0, 0.4, 0.0], 36.0)
+    g.write("spheres.gltf")
+
+
+def textured():
+    g = Gltf()
+    n = 64
+    base = png(n, n, 4, lambda x, y: ((40, 120, 200, 255) if (x // 8 + y // 8) % 2 else (230, 200, 60, 255))
+               if 6 <= x < 58 and 6 <= y < 58 else (200, 200, 200, 0))  # a clear frame: cut by MASK
+    mr = png(n, n, 3, lambda x, y: (0, int(255 * x / (n - 1)), 255 if (y // 16) % 2 else 0))  # G ramp, B stripes
+    def bump(x, y):
+        cx, cy = (x % 16) - 7.5, (y % 16) - 7.5
+        r2 = cx * cx + cy * cy
+        if r2 > 36:
+            return (128, 128, 255)
+        h = math.sqrt(36 - r2)
+        nx, ny, nz = cx / 6, -cy / 6, h / 6  # tangent-space normal of a dome; +y up the image
+        ln = math.sqrt(nx * nx + ny * ny + nz * nz)
+        return tuple(int(round(127.5 + 127.5 * c / ln)) for c in (nx, ny, nz))
+    normal = png(n, n, 3, bump)
+    emissive = png(n, n, 3, lambda x, y: (255, 140, 40) if 24 <= x < 40 and 24 <= y < 40 else (0, 0, 0))
+    tb, tmr, tn, te = g.image(base), g.image(mr), g.image(normal), g.image(emissive)
+    m = g.material(name="Tile", alphaMode="MASK", alphaCutoff=0.5,
+                   pbrMetallicRoughness={"baseColorTexture": {"index": tb}, "metallicRoughnessTexture": {"index": tmr},
+                                         "metallicFactor": 1.0, "roughnessFactor": 1.0},
+                   normalTexture={"index": tn, "scale": 1.0}, emissiveTexture={"index": te},
+                   emissiveFactor=[1.0, 1.0, 1.0], extensions={"KHR_materials_emissive_strength": {"emissiveStrength": 4.0}})
+    g.d["extensionsUsed"] = ["KHR_materials_emissive_strength"]
+    g.node(mesh=quad(g, [(-1, 0, 1), (1, 0, 1), (1, 0, -1), (-1, 0, -1)], (0, 1, 0), m), translation=[0, 0.3, 0],
+           rotation=[math.sin(math.radians(20)), 0, 0, math.cos(math.radians(20))], name="Tile")
+    floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.6, 0.6, 0.6, 1], "metallicFactor": 0.0,
+                                                            "roughnessFactor": 1.0})
+    g.node(mesh=ground(g, 10, floor), name="Ground")
+    point = g.light(type="point", color=[1, 1, 1], intensity=1500.0, name="Lamp")
+    g.node(extensions={"KHR_lights_punctual": {"light": point}}, translation=[1.5, 3.0, 2.0], name="LampNode")
+    camera_node(g, [0.0, 2.6, 2.8], [0.0, 0.3, 0.0], 45.0)
+    g.write("textured.gltf")
+
+
+def plane_lights():
+    for name, light, extra in [
+        ("plane_point.gltf", {"type": "point", "intensity": 683.0}, {}),
+        ("plane_range.gltf", {"type": "point", "intensity": 683.0, "range": 3.0}, {}),
+        ("plane_spot.gltf", {"type": "spot", "intensity": 683.0, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.5}},
+         {"rotation": [-math.sqrt(0.5), 0, 0, math.sqrt(0.5)]}),  # -z turned to -y: straight down
+        ("plane_directional.gltf", {"type": "directional", "intensity": 683.0},
+         {"rotation": [-math.sin(math.radians(60) / 2), 0, 0, math.cos(math.radians(60) / 2)]}),  # 30 degrees from the normal
+    ]:
+        g = Gltf()
+        white = g.material(name="White", pbrMetallicRoughness={"baseColorFactor": [0.8, 0.8, 0.8, 1], "metallicFactor": 0.0,
+                                                                "roughnessFactor": 1.0})
+        g.node(mesh=ground(g, 50, white), name="Plane")
+        l = g.light(**light)
+        g.node(extensions={"KHR_lights_punctual": {"light": l}}, translation=[0.0, 2.0, 0.0], **extra)
+        c = g.camera(type="orthographic", orthographic={"xmag": 2.0, "ymag": 2.0, "znear": 0.01, "zfar": 100.0}, name="Down")
+        g.node(camera=c, translation=[0.0, 10.0, 0.0], rotation=[-math.sqrt(0.5), 0, 0, math.sqrt(0.5)], name="Down")
+        g.write(name)
+
+
+BOX = ([-0.5, -0.5, 0.5, 0.5, -0.5, 0.5, 0.5, 0.5, 0.5, -0.5, 0.5, 0.5,   # +z face, then +y, +x
+        -0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, -0.5, -0.5, 0.5, -0.5,
+        0.5, -0.5, 0.5, 0.5, -0.5, -0.5, 0.5, 0.5, -0.5, 0.5, 0.5, 0.5],
+       [0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7, 8, 9, 10, 8, 10, 11])
+
+
+def mat4_of(t, q, s):
+    x, y, z, w = q
+    r = [[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+         [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+         [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]]
+    return [[r[i][j] * s[j] for j in range(3)] + [t[i]] for i in range(3)] + [[0, 0, 0, 1]]
+
+
+def apply(m, p):
+    return [sum(m[i][j] * p[j] for j in range(3)) + m[i][3] for i in range(3)]
+
+
+def matmul(a, b):
+    return [[sum(a[i][k] * b[k][j] for k in range(4)) for j in range(4)] for i in range(4)]
+
+
+def transforms():
+    qa = [0.0, math.sin(0.35), 0.0, math.cos(0.35)]               # 40 degrees about y
+    qb = [math.sin(0.25), 0.0, 0.0, math.cos(0.25)]               # 28.6 degrees about x
+    qc = [0.0, 0.0, math.sin(-0.4), math.cos(-0.4)]               # -45.8 degrees about z
+    a = ([1.0, 0.2, -0.5], qa, [1.5, 0.5, 2.0])
+    parent = ([-1.0, 0.5, 0.0], qb, [1.0, 1.0, 1.0])
+    child = ([0.3, 0.0, 0.4], qc, [0.8, -1.2, 0.8])                 # a mirroring scale
+    g = Gltf()
+    m = g.material(name="Grey", pbrMetallicRoughness={"baseColorFactor": [0.7, 0.7, 0.7, 1]})
+    mesh = g.mesh(BOX[0], None, None, BOX[1], m)
+    g.node(mesh=mesh, translation=a[0], rotation=a[1], scale=a[2], name="A")
+    c = g.node(root=False, mesh=mesh, translation=child[0], rotation=child[1], scale=child[2], name="Child")
+    g.node(children=[c], translation=parent[0], rotation=parent[1], name="Parent")
+    g.write("transforms.gltf")
+    g.write_glb("transforms.glb")
+    flat = Gltf()
+    m = flat.material(name="Grey", pbrMetallicRoughness={"baseColorFactor": [0.7, 0.7, 0.7, 1]})
+    for world, mirrored in [(mat4_of(*a), False), (matmul(mat4_of(*parent), mat4_of(*child)), True)]:
+        pos = [c for i in range(0, len(BOX[0]), 3) for c in apply(world, BOX[0][i:i + 3])]
+        idx = list(BOX[1])
+        if mirrored:  # keep the winding counter-clockwise seen from outside
+            for k in range(0, len(idx), 3):
+                idx[k + 1], idx[k + 2] = idx[k + 2], idx[k + 1]
+        flat.node(mesh=flat.mesh(pos, None, None, idx, m))
+    flat.write("transforms_flat.gltf")
+
+
+def alpha_modes():
+    g = Gltf()
+    red = g.material(name="Wall", pbrMetallicRoughness={"baseColorFactor": [0.8, 0.1, 0.1, 1], "metallicFactor": 0.0})
+    g.node(mesh=quad(g, [(-3, -1, -1), (3, -1, -1), (3, 2, -1), (-3, 2, -1)], (0, 0, 1), red), name="Wall")
+    ramp = g.image(png(32, 4, 4, lambda x, y: (255, 255, 255, int(255 * x / 31))))  # alpha 0 -> 1 across u
+    for k, (mode, extra) in enumerate([("OPAQUE", {}), ("MASK", {"alphaCutoff": 0.5}), ("BLEND", {})]):
+        m = g.material(name=mode, alphaMode=mode, **extra,
+                       pbrMetallicRoughness={"baseColorTexture": {"index": ramp}, "baseColorFactor": [1, 1, 1, 1],
+                                             "metallicFactor": 0.0})
+        x = -2.0 + 1.6 * k
+        g.node(mesh=quad(g, [(x - 0.7, 0, 0), (x + 0.7, 0, 0), (x + 0.7, 1, 0), (x - 0.7, 1, 0)], (0, 0, 1), m), name=mode)
+    half = g.material(name="HalfBlend", alphaMode="BLEND", pbrMetallicRoughness={"baseColorFactor": [1, 1, 1, 0.5]})
+    g.node(mesh=quad(g, [(-0.5, 1.2, 0), (0.5, 1.2, 0), (0.5, 1.8, 0), (-0.5, 1.8, 0)], (0, 0, 1), half), name="HalfBlend")
+    camera_node(g, [0.0, 0.8, 4.0], [0.0, 0.8, 0.0], 40.0)
+    g.write("alpha_modes.gltf")
+
+
+def cameras():
+    g = Gltf()
+    m = g.material(name="Grey", pbrMetallicRoughness={"baseColorFactor": [0.7, 0.7, 0.7, 1]})
+    g.node(mesh=g.mesh(BOX[0], None, None, BOX[1], m), name="Box")
+    camera_node(g, [2.0, 1.5, 3.0], [0.0, 0.0, 0.0], 30.0, aspect=2.0, name="Wide")
+    c = g.camera(type="orthographic", orthographic={"xmag": 1.5, "ymag": 1.0, "znear": 0.01, "zfar": 100}, name="Ortho")
+    g.node(camera=c, translation=[0.0, 0.0, 5.0], name="Ortho")
+    g.write("cameras.gltf")
+
+
+def bin_and_image():
+    g = Gltf()
+    with open(os.path.join(HERE, "checker.png"), "wb") as f:
+        f.write(png(8, 8, 3, lambda x, y: (255, 255, 255) if (x // 4 + y // 4) % 2 else (20, 20, 20)))
+    g.d["images"] = [{"uri": "checker.png"}]
+    g.d["textures"] = [{"source": 0}]
+    m = g.material(name="Checker", pbrMetallicRoughness={"baseColorTexture": {"index": 0}, "metallicFactor": 0.0})
+    g.node(mesh=quad(g, [(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)], (0, 0, 1), m), name="Quad")
+    g.write("bin_and_image.gltf", external=True)
+
+
+if __name__ == "__main__":
+    os.makedirs(HERE, exist_ok=True)
+    spheres()
+    textured()
+    plane_lights()
+    transforms()
+    alpha_modes()
+    cameras()
+    bin_and_image()

@@ -1,0 +1,211 @@
+// glTF 2.0 loading and rendering: node transforms against pre-transformed triangles, each light
+// type against its analytic radiance on a plane, texture orientation, alpha modes, cameras, the
+// default lighting, and the Khronos sample models loading and rendering without NaN.
+#include "accel/accel.h"
+#include "gltf/gltf_loader.h"
+#include "scene/scene_loader.h"
+#include "tests/gltf_brdf_reference.h"
+#include "tests/test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace pt::test {
+namespace {
+
+const std::string kGltf = PT_SOURCE_DIR "/scenes/gltf/";
+
+Scene load(const std::string& path, Warnings* warningsOut = nullptr) {
+    Warnings w;
+    Scene s = loadScene(path, w);
+    addDefaultLighting(s, w);
+    if (warningsOut) *warningsOut = w;
+    return s;
+}
+
+TEST(Gltf, NodeTransformsEqualPreTransformedTriangles) {
+    Scene a = load(kGltf + "transforms.gltf"), b = load(kGltf + "transforms_flat.gltf");
+    ASSERT_EQ(a.triangleCount(), 12u);
+    ASSERT_EQ(b.triangleCount(), a.triangleCount());
+    for (size_t t = 0; t < a.triangleCount(); ++t) {
+        Vec3 pa[3], pb[3];
+        for (int k = 0; k < 3; ++k) pa[k] = a.positions[a.triPositions[t][k]], pb[k] = b.positions[b.triPositions[t][k]];
+        for (int k = 0; k < 3; ++k)
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(pa[k][c], pb[k][c], 1e-5f) << "triangle " << t << " corner " << k;
+        // The same winding: the mirrored instance's triangles are turned back to face outwards.
+        Vec3 na = glm::cross(pa[1] - pa[0], pa[2] - pa[0]), nb = glm::cross(pb[1] - pb[0], pb[2] - pb[0]);
+        EXPECT_GT(glm::dot(na, nb), 0.0f) << "triangle " << t;
+    }
+    // The transformed box renders as the flat one does.
+    a.cameras = b.cameras = {lookAt({3, 2, 4}, {0, 0.3f, 0}, 40)};
+    RenderSettings s;
+    expectSameImage(render(a, 24, 24, 64, s), render(b, 24, 24, 64, s), "transformed against flat");
+}
+
+// A white dielectric plane (roughness 1) under each light, seen straight down by an orthographic
+// camera at depth 1: every pixel's radiance is f(wo = up, wi) E(wi), with f the specification's
+// BRDF and E the light's irradiance, 683 cd or lux being 1 W/sr or W/m^2.
+struct Expected {
+    std::string file;
+    std::function<Spectrum(Vec3 p)> radiance;
+};
+
+Spectrum brdfTimesCos(Vec3 towardsLight) {
+    Vec3 v(0, 0, 1), l(towardsLight.x, towardsLight.z, towardsLight.y); // the plane's frame: z up
+    return specBrdf(Spectrum(0.8f), 0.0f, 1.0f, v, l) * l.z;
+}
+
+TEST(Gltf, LightsMatchTheirAnalyticRadianceOnAPlane) {
+    const Vec3 lamp(0, 2, 0);
+    auto point = [&](Vec3 p, float falloff) {
+        Vec3 d = lamp - p;
+        float d2 = glm::dot(d, d);
+        return brdfTimesCos(glm::normalize(d)) * (falloff / d2);
+    };
+    std::vector<Expected> cases = {
+        {"plane_point.gltf", [&](Vec3 p) { return point(p, 1.0f); }},
+        {"plane_range.gltf",
+         [&](Vec3 p) {
+             float d = glm::length(lamp - p);
+             return point(p, sqr(std::clamp(1.0f - sqr(sqr(d / 3.0f)), 0.0f, 1.0f)));
+         }},
+        {"plane_spot.gltf",
+         [&](Vec3 p) {
+             float cd = glm::normalize(p - lamp).y * -1.0f; // the spot points straight down
+             float t = std::clamp((cd - std::cos(0.5f)) / (std::cos(0.2f) - std::cos(0.5f)), 0.0f, 1.0f);
+             return point(p, t * t);
+         }},
+        {"plane_directional.gltf",
+         [&](Vec3) {
+             // The light's -z turned by -60 degrees about x: it shines down and towards -z, so it
+             // comes from (0, cos 30, sin 30), 30 degrees from the normal.
+             float a = 30.0f * kPi / 180.0f;
+             return brdfTimesCos(Vec3(0, std::cos(a), std::sin(a)));
+         }},
+    };
+    for (const Expected& c : cases) {
+        Scene scene = load(kGltf + c.file);
+        ASSERT_EQ(scene.cameras.size(), 1u);
+        ASSERT_GT(scene.cameras[0].orthoHalfHeight, 0.0f);
+        RenderSettings s;
+        s.maxDepth = 1;
+        const int n = 16;
+        Rendered r = render(scene, n, n, 256, s);
+        // Pixel (i, j) sees the plane at x = -2 + 4 (i + 0.5) / n, z = -2 + 4 (j + 0.5) / n (row 0 at -z).
+        for (int j = 1; j < n - 1; j += 3)
+            for (int i = 1; i < n - 1; i += 3) {
+                Vec3 p(-2.0f + 4.0f * (i + 0.5f) / n, 0.0f, -2.0f + 4.0f * (j + 0.5f) / n);
+                // Average the expectation over the pixel, as the render does (the spot's edge is steep).
+                const int k = 16;
+                Spectrum want(0.0f);
+                for (int sy = 0; sy < k; ++sy)
+                    for (int sx = 0; sx < k; ++sx)
+                        want += c.radiance(p + Vec3((sx + 0.5f - 0.5f * k) / k * 4.0f / n, 0,
+                                                    (sy + 0.5f - 0.5f * k) / k * 4.0f / n));
+                want /= float(k * k);
+                Spectrum got = r.pixel(i, j);
+                EXPECT_NEAR(got.y, want.y, 0.01f * want.y + 1e-5f) << c.file << " pixel " << i << ", " << j;
+            }
+    }
+}
+
+// glTF's uv (0, 0) is the image's top-left corner: the checker's dark top-left block shows at
+// the top-left of the quad, seen from +z.
+TEST(Gltf, TexturesAreTheRightWayUp) {
+    Scene scene = load(kGltf + "bin_and_image.gltf");
+    ASSERT_EQ(scene.textures->size(), 1u);
+    EXPECT_NE(std::find(scene.sources.begin(), scene.sources.end(), kGltf + "bin_and_image.bin"), scene.sources.end());
+    scene.cameras = {lookAt({0, 0, 3}, {0, 0, 0}, 30)};
+    RenderSettings s;
+    s.maxDepth = 1;
+    Rendered r = render(scene, 32, 32, 16, s);
+    float topLeft = regionStats(r, 9, 9, 14, 14).mean.y, topRight = regionStats(r, 18, 9, 23, 14).mean.y;
+    float bottomLeft = regionStats(r, 9, 18, 14, 23).mean.y;
+    EXPECT_LT(topLeft * 5.0f, topRight);
+    EXPECT_LT(topLeft * 5.0f, bottomLeft);
+}
+
+TEST(Gltf, AlphaModesCoverAsSpecified) {
+    Scene scene = load(kGltf + "alpha_modes.gltf");
+    RenderSettings s;
+    s.maxDepth = 1;
+    Rendered r = render(scene, 160, 100, 16, s);
+    // The quads cover pixel columns 0 to 35 (OPAQUE), 42 to 90 (MASK) and 97 to 145 (BLEND), rows
+    // 43 to 77; alpha rises from 0 at each quad's left edge to 1 at its right.
+    auto redness = [&](int x0, int x1) {
+        Spectrum m = regionStats(r, x0, 50, x1, 70).mean;
+        return m.x / std::max(1e-6f, m.y);
+    };
+    EXPECT_LT(redness(10, 30), 1.5f);   // OPAQUE ignores alpha: white even where alpha is 0
+    EXPECT_GT(redness(46, 58), 4.0f);   // MASK, alpha below 0.5: the red wall shows
+    EXPECT_LT(redness(74, 86), 1.5f);   // MASK, alpha above 0.5: the quad
+    EXPECT_GT(redness(100, 106), 3.0f); // BLEND: mostly the wall where alpha is below 0.2
+    EXPECT_GT(redness(100, 106), 2.0f * redness(136, 142)); // and mostly the quad above 0.8
+    EXPECT_GT(redness(136, 142), 1.05f);                    // still a little see-through
+}
+
+TEST(Gltf, CamerasKeepTheirAspectAndProjection) {
+    Scene scene = load(kGltf + "cameras.gltf");
+    ASSERT_EQ(scene.cameras.size(), 2u);
+    EXPECT_EQ(scene.cameras[0].name, "Wide");
+    EXPECT_NEAR(scene.cameras[0].fovY, 30.0f, 1e-4f);
+    EXPECT_NEAR(scene.cameras[0].aspect, 2.0f, 1e-6f);
+    EXPECT_NEAR(scene.cameras[0].position.x, 2.0f, 1e-5f);
+    Vec3 ahead = glm::normalize(scene.cameras[0].target - scene.cameras[0].position);
+    Vec3 wanted = glm::normalize(Vec3(-2.0f, -1.5f, -3.0f));
+    EXPECT_GT(glm::dot(ahead, wanted), 0.99999f);
+    EXPECT_EQ(scene.cameras[1].name, "Ortho");
+    EXPECT_NEAR(scene.cameras[1].orthoHalfHeight, 1.0f, 1e-6f);
+    EXPECT_NEAR(scene.cameras[1].aspect, 1.5f, 1e-6f);
+}
+
+TEST(Gltf, UnlitFilesGetAWhiteEnvironmentAndLitOnesABlackOne) {
+    Warnings w;
+    Scene unlit = load(kGltf + "alpha_modes.gltf", &w);
+    ASSERT_TRUE(unlit.environment.map);
+    EXPECT_EQ(unlit.environment.map->radiance(Vec3(0, 1, 0)), Spectrum(1.0f));
+    bool warned = false;
+    for (const std::string& m : w.messages()) warned |= m.find("has no lights") != std::string::npos;
+    EXPECT_TRUE(warned);
+    Scene lit = load(kGltf + "spheres.gltf");
+    EXPECT_FALSE(lit.environment.map);
+    EXPECT_TRUE(isBlack(lit.environment.radiance(Vec3(0, 1, 0))));
+    EXPECT_EQ(lit.lights.size(), 1u);
+    EXPECT_EQ(lit.directionalLights.size(), 1u);
+    EXPECT_TRUE(lit.lights[0].isSpot());
+}
+
+// The five Khronos models of ../shared/gltf load and render without NaN or negative values.
+TEST(Gltf, SampleModelsRenderWithoutNan) {
+    const std::string dir = PT_SOURCE_DIR "/../shared/gltf/";
+    if (!std::filesystem::exists(dir)) GTEST_SKIP() << dir << " is absent (shared data)";
+    for (const char* name : {"Box", "BoxTextured", "Duck", "DamagedHelmet", "MetalRoughSpheresNoTextures"})
+        for (const char* form : {"glTF-Binary/%s.glb", "glTF/%s.gltf"}) {
+            char rel[128];
+            std::snprintf(rel, sizeof rel, form, name);
+            std::string path = dir + name + "/" + rel;
+            if (!std::filesystem::exists(path)) continue;
+            Scene scene = load(path);
+            EXPECT_GT(scene.triangleCount(), 0u) << path;
+            RenderSettings s;
+            Rendered r = render(scene, 24, 24, 8, s);
+            double sum = 0.0;
+            for (float v : r.mean) {
+                ASSERT_TRUE(std::isfinite(v) && v >= 0.0f) << path;
+                sum += v;
+            }
+            EXPECT_GT(sum, 0.0) << path;
+            EXPECT_EQ(r.rays.discarded, 0u) << path;
+        }
+}
+
+TEST(Gltf, RequiredExtensionsMustBeSupported) {
+    EXPECT_TRUE(gltfExtensionSupported("KHR_lights_punctual"));
+    EXPECT_TRUE(gltfExtensionSupported("KHR_texture_transform"));
+    EXPECT_FALSE(gltfExtensionSupported("KHR_draco_mesh_compression"));
+    EXPECT_FALSE(gltfExtensionSupported("EXT_meshopt_compression"));
+}
+
+} // namespace
+} // namespace pt::test
