@@ -442,6 +442,7 @@ int renderCommand(int argc, char** argv) {
     if (!args.env.empty()) {
         try {
             std::string warning;
+            scene.environment = Environment{}; // replaces the MTL's environment, a sky included
             scene.environment.map = std::make_shared<const EnvironmentMap>(
                 readEnvironmentMap(args.env, float(args.envRotate), float(args.envScale), warning));
             if (!warning.empty()) warnings.add(warning);

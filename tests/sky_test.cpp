@@ -126,7 +126,7 @@ TEST(PreethamSky, SunBelowTheHorizonIsHidden) {
     EXPECT_NEAR(luminance(a), luminance(b), 0.2f * luminance(b));
     Environment env = skyEnvironment(skyAt(-5.0, 30.0, 3.0f));
     EXPECT_FALSE(env.sun);
-    ASSERT_TRUE(env.map);
+    ASSERT_TRUE(env.preetham);
 }
 
 // The sun's spectral radiance through the atmosphere, against an independent evaluation of the

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 
 namespace pt {
@@ -499,16 +501,28 @@ Scene loadGltf(const std::string& path, Warnings& warnings) {
     auto size = std::filesystem::file_size(path, ec);
     if (!ec && double(size) > 0.5 * physicalMemoryBytes())
         throw LoadError(path + ": " + std::to_string(size) + " bytes, more than half this machine's memory");
+    std::ifstream in(path, std::ios::binary);
+    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in.good() && !in.eof()) throw LoadError(path + ": cannot read the file");
+    bool binary = toLower(std::filesystem::path(path).extension().string()) == ".glb";
+    return loadGltfFromMemory(path, bytes, binary, warnings);
+}
 
+Scene loadGltfFromMemory(const std::string& path, const std::vector<unsigned char>& bytes, bool binary,
+                         Warnings& warnings) {
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
     std::vector<std::vector<unsigned char>> images;
     loader.SetImageLoader(keepImageBytes, &images);
     std::string err, warn;
-    bool binary = toLower(std::filesystem::path(path).extension().string()) == ".glb";
+    std::string base = std::filesystem::path(path).parent_path().string();
+    if (base.empty()) base = ".";
     bool ok = false;
+    if (bytes.size() > 0xffffffffu) throw LoadError(path + ": larger than the 4 GB a glTF file can address");
     try {
-        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path) : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+        ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), base)
+                    : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                                 unsigned(bytes.size()), base);
     } catch (const std::exception& e) {
         throw LoadError(path + ": not a valid glTF file: " + e.what());
     }

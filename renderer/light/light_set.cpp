@@ -1,6 +1,7 @@
 #include "light/light_set.h"
 
 #include "accel/ray_offset.h"
+#include "light/sky_environment.h"
 #include "light/sphere_light_sampling.h"
 #include "sampling/warp.h"
 
@@ -75,6 +76,8 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
         // A triangle given twice is one surface: sampled as two emitters it would send its light
         // twice (a shadow ray to either copy passes the other), so copies share one emitter.
         std::map<std::array<float, 9>, uint32_t> emitterOfCorners;
+        // Each material's emission texture mean, once (a texture has millions of texels).
+        std::vector<double> emissionMean(scene.materials.size(), -1.0);
         for (size_t t = 0; t < scene.triangleCount(); ++t) {
             const Material& m = scene.materials[scene.triMaterial[t]];
             if (!m.isEmissive()) continue;
@@ -95,12 +98,15 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
             e.radiance = m.emission;
             emitters_.push_back(e);
             // Both sides emit; a textured emitter by its texture's mean (a guess at this triangle's share).
-            double mean = m.emissionMap.used() ? meanTexel(scene.textures->operator[](m.emissionMap.texture)) : 1.0;
+            double& mean = emissionMean[scene.triMaterial[t]];
+            if (mean < 0.0) mean = m.emissionMap.used() ? meanTexel((*scene.textures)[m.emissionMap.texture]) : 1.0;
             power.push_back(2.0 * kPi * double(area) * double(average(m.emission)) * mean);
         }
     }
-    if (scene.environment.map) {
-        environment_ = std::make_unique<EnvironmentLight>(*scene.environment.map);
+    // The sky's sampling density is baked here, once per render, not when a scene is loaded.
+    if (scene.environment.preetham) skyDensity_ = std::make_unique<EnvironmentMap>(bakeSky(*scene.environment.preetham));
+    if (const EnvironmentMap* density = skyDensity_ ? skyDensity_.get() : scene.environment.map.get()) {
+        environment_ = std::make_unique<EnvironmentLight>(*density);
         // Its power as the light that crosses the scene's bounding disk: pi R^2 times the
         // radiance integrated over the sphere.
         double radius = sceneBoundingRadius(scene);

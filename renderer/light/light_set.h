@@ -79,6 +79,7 @@ private:
     Distribution1D distribution_;
     std::vector<uint32_t> lightEmitter_;
     std::vector<uint32_t> triangleEmitter_; // empty unless the scene has emissive triangles
+    std::unique_ptr<EnvironmentMap> skyDensity_; // the Preetham sky, baked: what samples it
     std::unique_ptr<EnvironmentLight> environment_;
     uint32_t environmentEmitter_ = ~0u;
     uint32_t sunEmitter_ = ~0u;

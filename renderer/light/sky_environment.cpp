@@ -37,7 +37,6 @@ SunDisk sunDisk(const PreethamSky& sky) {
 Environment skyEnvironment(const SkyParameters& parameters) {
     auto sky = std::make_shared<const PreethamSky>(parameters);
     Environment env;
-    env.map = std::make_shared<const EnvironmentMap>(bakeSky(*sky));
     if (!isBlack(sky->sunRadiance())) env.sun = sunDisk(*sky);
     env.preetham = sky;
     return env;

@@ -1,5 +1,5 @@
-// The Preetham sky as an environment. Its radiance is baked once per render into a lat-long map
-// whose texels are the density that samples it, as any map is sampled; the radiance itself comes
+// The Preetham sky as an environment. Its radiance is baked once per render (by the light set)
+// into a lat-long map whose texels are the density that samples it, as any map is sampled; the radiance itself comes
 // from the model, which costs no more than a map lookup (pt-bench sky: about 100 ns each, most of
 // it the atan2 and acos that turn a direction into map coordinates) and keeps the horizon's step
 // and the circumsolar peak exact, where bilinear lookups would blur them. The sun's disk is an

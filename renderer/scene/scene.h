@@ -99,8 +99,8 @@ struct Material {
 // Radiance seen by rays that leave the scene: an HDR map where one is given (it is then a light of
 // the light set, sampled by next-event estimation), else the lab's two tones, `sky` for
 // directions with y > 0 and `ground` below, reached by BSDF sampling only as the lab has it.
-// The Preetham sky is evaluated from the model itself, with a map baked from it as the density
-// that samples it (light/sky_environment.h), and the sun's disk is a light of its own.
+// The Preetham sky is evaluated from the model itself (the light set bakes a map of it as the
+// density that samples it, light/sky_environment.h), and the sun's disk is a light of its own.
 struct Environment {
     Spectrum sky{0.5f, 0.6f, 0.7f};
     Spectrum ground{0.05f, 0.025f, 0.001f};

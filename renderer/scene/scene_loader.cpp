@@ -99,7 +99,7 @@ static bool isGltf(const std::string& path) {
 }
 
 void addDefaultLighting(Scene& scene, Warnings& warnings) {
-    if (!isGltf(scene.path) || scene.environment.map) return;
+    if (!isGltf(scene.path) || scene.environment.map || scene.environment.preetham) return;
     if (!scene.lights.empty() || !scene.directionalLights.empty()) {
         scene.environment.sky = scene.environment.ground = Spectrum(0.0f); // the file's lights alone
         return;
