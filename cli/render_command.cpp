@@ -77,6 +77,7 @@ options (default in brackets):
   --sun-dir X,Y,Z        the direction towards the sun, instead of the two angles
   --turbidity T          haze, from 1.7 (very clear) to 10 (hazy) [3]
   --sky-scale S          multiply the sky's, sun's and ground's radiance by S [1]
+  --exposure EV          multiply the image by 2^EV (the variance layer by its square) [0]
   --clamp X              scale down any sample whose largest channel exceeds X: fewer
                          fireflies, but biased (light is lost); 0 is off [0]
   -q, --quiet            print neither warnings nor progress (nor the libraries' own lines),
@@ -100,6 +101,7 @@ struct RenderArgs {
     long long spp = 16;
     int width = 512, height = 512;
     bool resGiven = false;
+    double exposure = 0.0; // EV: the image is scaled by 2^exposure
     std::string camera = "0";
     int threads = 0;
     RenderSettings settings;
@@ -195,6 +197,8 @@ RenderArgs parseArgs(int argc, char** argv) {
                 else if (name == "depth") r.aovDepth = true;
                 else throw UsageError("option --aov: unknown layer \"" + name + "\"; known: variance, albedo, normal, depth");
             }
+        } else if (opt == "exposure") {
+            r.exposure = args.number(opt, -64.0, 64.0);
         } else if (opt == "clamp") {
             r.settings.clamp = float(args.number(opt, 0.0, 1e30));
         } else if (opt == "env") {
@@ -395,6 +399,7 @@ void addMetadata(Image& image, const RenderArgs& args, const Scene& scene, const
     text("pt:lightSampling", name(args.settings.lightSampling));
     text("pt:hemisphere", name(args.settings.hemisphere));
     real("pt:clamp", args.settings.clamp);
+    real("pt:exposure", args.exposure);
     integer("pt:threadsRequested", args.threads);
     integer("pt:threads", threads);
     real("pt:renderSeconds", result.seconds);
@@ -526,7 +531,15 @@ int renderCommand(int argc, char** argv) {
     image.width = args.width;
     image.height = args.height;
     image.rgb = result.film.mean();
-    if (args.aovVariance) image.layers.push_back({"variance", {"R", "G", "B"}, result.film.varianceOfMean()});
+    // --exposure scales the radiance, and the variance of its mean by the square.
+    const float gain = float(std::exp2(args.exposure));
+    if (args.exposure != 0.0)
+        for (float& v : image.rgb) v *= gain;
+    if (args.aovVariance) {
+        image.layers.push_back({"variance", {"R", "G", "B"}, result.film.varianceOfMean()});
+        if (args.exposure != 0.0)
+            for (float& v : image.layers.back().pixels) v *= gain * gain;
+    }
     if (args.aovAlbedo) image.layers.push_back({"albedo", {"R", "G", "B"}, result.film.albedo()});
     if (args.aovNormal) image.layers.push_back({"normal", {"X", "Y", "Z"}, result.film.normal()});
     if (args.aovDepth) image.layers.push_back({"depth", {"Z"}, result.film.depth()});

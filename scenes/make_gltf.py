@@ -158,7 +158,10 @@ def sphere(g, radius, material, rings=24, segments=48):
         for i in range(rings):
             for j in range(segments):
                 a, b = i * (segments + 1) + j, (i + 1) * (segments + 1) + j
-                idx += [a, b, a + 1, a + 1, b, b + 1]
+                if i > 0:  # the first ring's other triangle would have two corners on the pole
+                    idx += [a, b, a + 1]
+                if i < rings - 1:
+                    idx += [a + 1, b, b + 1]
         cache[key] = {"POSITION": g.accessor(pos, "VEC3", 3), "NORMAL": g.accessor(nrm, "VEC3", 3),
                       "indices": g.accessor(idx, "SCALAR", 1)}
     acc = cache[key]

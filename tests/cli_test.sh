@@ -48,6 +48,14 @@ for c in R G B variance.R albedo.G normal.Z depth.Z; do
 done
 expect 0 "16x16, 4 spp" "$pt" render "$scene" -spp 4 --res 16x16 --camera Front -o "$tmp/a.png"
 expect 0 "8x8, 2 spp" "$pt" render "$scene" -spp 2 --res 8x8 --sky --sun-elevation 30 --sun-azimuth 250 --turbidity 4.5 --sky-scale 0.5 -o "$tmp/sky.exr"
+"$pt" render "$scene" -spp 2 --res 8x8 --seed 3 -q -o "$tmp/ev0.exr" > /dev/null
+expect 0 "8x8, 2 spp" "$pt" render "$scene" -spp 2 --res 8x8 --seed 3 --exposure 2 -o "$tmp/ev2.exr"
+/usr/bin/python3 - "$tmp/ev0.exr" "$tmp/ev2.exr" <<'PY' || { echo "FAIL: --exposure 2 is not 4 times the image"; failures=$((failures + 1)); }
+import sys, OpenImageIO as oiio, numpy as np
+a, b = (oiio.ImageBuf(p).get_pixels(oiio.FLOAT)[:, :, :3] for p in sys.argv[1:3])
+sys.exit(0 if np.allclose(b, 4 * a, rtol=1e-6, atol=1e-7) else 1)
+PY
+oiiotool --info -v "$tmp/ev2.exr" | grep -q "pt:exposure: 2" || { echo "FAIL: pt:exposure missing"; failures=$((failures + 1)); }
 info=$(oiiotool --info -v "$tmp/sky.exr")
 for attr in 'pt:environment: "preetham"' 'pt:sunElevation: 30' 'pt:sunAzimuth: 250' 'pt:turbidity: 4.5' 'pt:skyScale: 0.5'; do
   [[ "$info" == *"$attr"* ]] || { echo "FAIL: $attr missing from the sky render's metadata"; failures=$((failures + 1)); }
