@@ -49,12 +49,7 @@ void cutoutFilter(const RTCFilterFunctionNArguments* args) {
         uint32_t tri = cut->triangle[RTCHitN_primID(args->hit, args->N, i)];
         float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
         const Material& m = scene.materials[scene.triMaterial[tri]];
-        Vec2 uv(0.0f);
-        if (!scene.triUvs.empty() && scene.triUvs[tri].x >= 0) {
-            const glm::ivec3& ti = scene.triUvs[tri];
-            uv = (1.0f - u - v) * scene.uvs[ti.x] + u * scene.uvs[ti.y] + v * scene.uvs[ti.z];
-        }
-        float coverage = m.alpha * scene.textures->scalar(m.alphaMap, uv, Footprint{});
+        float coverage = m.alpha * scene.textures->scalar(m.alphaMap, scene.uvAt(tri, u, v), Footprint{});
         if (m.alphaCutoff >= 0.0f) coverage = coverage >= m.alphaCutoff ? 1.0f : 0.0f;
         if (coverage >= 1.0f) continue;
         float coin = coverageCoin(tri, u, v, RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),

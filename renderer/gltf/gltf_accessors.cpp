@@ -44,35 +44,32 @@ int componentsOf(int type) {
     }
 }
 
+// A value of type T at p, which need not be aligned.
+template <typename T>
+T load(const uint8_t* p) {
+    T v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
 // One component at p, converted to float.
 float component(const uint8_t* p, int type, bool normalized) {
     switch (type) {
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-        float f;
-        std::memcpy(&f, p, 4);
-        return f;
-    }
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return load<float>(p);
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? p[0] / 255.0f : float(p[0]);
     case TINYGLTF_COMPONENT_TYPE_BYTE: {
-        int8_t v;
-        std::memcpy(&v, p, 1);
+        int8_t v = load<int8_t>(p);
         return normalized ? std::max(v / 127.0f, -1.0f) : float(v);
     }
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        uint16_t v;
-        std::memcpy(&v, p, 2);
+        uint16_t v = load<uint16_t>(p);
         return normalized ? v / 65535.0f : float(v);
     }
     case TINYGLTF_COMPONENT_TYPE_SHORT: {
-        int16_t v;
-        std::memcpy(&v, p, 2);
+        int16_t v = load<int16_t>(p);
         return normalized ? std::max(v / 32767.0f, -1.0f) : float(v);
     }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-        uint32_t v;
-        std::memcpy(&v, p, 4);
-        return float(v);
-    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return float(load<uint32_t>(p));
     default: return 0.0f;
     }
 }
@@ -80,16 +77,8 @@ float component(const uint8_t* p, int type, bool normalized) {
 uint32_t unsignedComponent(const uint8_t* p, int type) {
     switch (type) {
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[0];
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        uint16_t v;
-        std::memcpy(&v, p, 2);
-        return v;
-    }
-    default: {
-        uint32_t v;
-        std::memcpy(&v, p, 4);
-        return v;
-    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return load<uint16_t>(p);
+    default: return load<uint32_t>(p);
     }
 }
 

@@ -3,6 +3,7 @@
 #include "accel/ray_offset.h"
 #include "light/sky_environment.h"
 #include "light/sphere_light_sampling.h"
+#include "material/evaluate_material.h"
 #include "sampling/warp.h"
 
 #include <algorithm>
@@ -42,16 +43,6 @@ float LightSet::punctualFalloff(const SphereLight& l, const Vec3& wi, float dist
     }
     if (l.range > 0.0f) f *= sqr(std::clamp(1.0f - sqr(sqr(distance / l.range)), 0.0f, 1.0f));
     return f;
-}
-
-// The emission texture at barycentrics (b1, b2) of emissive triangle t.
-Spectrum LightSet::emissionTexel(const Material& m, uint32_t t, Vec2 bary) const {
-    Vec2 uv(0.0f);
-    if (!scene_.triUvs.empty() && scene_.triUvs[t].x >= 0) {
-        const glm::ivec3& ti = scene_.triUvs[t];
-        uv = (1.0f - bary.x - bary.y) * scene_.uvs[ti.x] + bary.x * scene_.uvs[ti.y] + bary.y * scene_.uvs[ti.z];
-    }
-    return scene_.textures->color(m.emissionMap, uv, Footprint{});
 }
 
 LightSet::LightSet(const Scene& scene) : scene_(scene) {
@@ -103,13 +94,13 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
             power.push_back(2.0 * kPi * double(area) * double(average(m.emission)) * mean);
         }
     }
+    // Distant lights are chosen by the power that crosses the scene's bounding disk, pi R^2 E.
+    const double radius = sceneBoundingRadius(scene);
     // The sky's sampling density is baked here, once per render, not when a scene is loaded.
     if (scene.environment.preetham) skyDensity_ = std::make_unique<EnvironmentMap>(bakeSky(*scene.environment.preetham));
     if (const EnvironmentMap* density = skyDensity_ ? skyDensity_.get() : scene.environment.map.get()) {
         environment_ = std::make_unique<EnvironmentLight>(*density);
-        // Its power as the light that crosses the scene's bounding disk: pi R^2 times the
-        // radiance integrated over the sphere.
-        double radius = sceneBoundingRadius(scene);
+        // Its power: pi R^2 times the radiance integrated over the sphere.
         double p = kPi * radius * radius * environment_->radiantIntensityIntegral();
         if (p > 0.0) {
             environmentEmitter_ = uint32_t(emitters_.size());
@@ -119,7 +110,6 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
     }
     if (const auto& sun = scene.environment.sun; sun && !isBlack(sun->radiance)) {
         // As for the map: pi R^2 times the radiance integrated over the disk.
-        double radius = sceneBoundingRadius(scene);
         sunEmitter_ = uint32_t(emitters_.size());
         Emitter e{Emitter::Kind::Sun, 0};
         e.center = sun->direction;
@@ -129,7 +119,6 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
         power.push_back(kPi * radius * radius * double(sun->solidAngle()) * double(average(sun->radiance)));
     }
     for (const DirectionalLight& d : scene.directionalLights) {
-        double radius = sceneBoundingRadius(scene);
         Emitter e{Emitter::Kind::Directional, 0};
         e.center = d.direction;
         e.radiance = d.irradiance;
@@ -211,9 +200,9 @@ LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {
     s.wi = d / s.distance;
     float cosLight = std::abs(glm::dot(s.normal, s.wi));
     if (cosLight == 0.0f) return s;
-    s.radiance = e.radiance;
     const Material& m = scene_.materials[scene_.triMaterial[e.index]];
-    if (m.emissionMap.used()) s.radiance *= emissionTexel(m, e.index, bary);
+    s.radiance = m.emissionMap.used() ? emittedRadiance(m, *scene_.textures, scene_.uvAt(e.index, bary.x, bary.y), Footprint{})
+                                      : e.radiance;
     s.pdf = dist2 / (cosLight * 0.5f * area2);
     return s;
 }

@@ -72,8 +72,6 @@ public:
     static float punctualFalloff(const SphereLight& l, const Vec3& wi, float distance);
 
 private:
-    Spectrum emissionTexel(const Material& m, uint32_t triangle, Vec2 bary) const;
-
     const Scene& scene_;
     std::vector<Emitter> emitters_;
     Distribution1D distribution_;

@@ -119,9 +119,9 @@ Spectrum PreethamSky::skyRadiance(const Vec3& d) const {
 
 Spectrum PreethamSky::radiance(const Vec3& d) const { return d.y >= 0.0f ? skyRadiance(d) : groundRadiance_; }
 
-double PreethamSky::sunSolidAngle() const {
+double PreethamSky::sunOneMinusCos() const {
     double h = std::sin(0.5 * parameters_.sunAngularRadius);
-    return 2.0 * kPiD * 2.0 * h * h; // 2 pi (1 - cos r), with 1 - cos r = 2 sin^2(r / 2)
+    return 2.0 * h * h;
 }
 
 Spectrum PreethamSky::sunNormalIrradiance() const {

@@ -54,9 +54,11 @@ public:
 
     // Uniform radiance of the sun's disk, 0 when it is below the horizon.
     Spectrum sunRadiance() const { return sunRadiance_; }
-    // Solid angle of the disk and the irradiance it gives a surface facing it (radiance times the
-    // cosine-weighted solid angle pi sin^2(radius)).
-    double sunSolidAngle() const;
+    // 1 - cos of the disk's angular radius (as 2 sin^2(r / 2): exact for a tiny disk), its solid
+    // angle, and the irradiance it gives a surface facing it (radiance times the cosine-weighted
+    // solid angle pi sin^2(radius)).
+    double sunOneMinusCos() const;
+    double sunSolidAngle() const { return 2.0 * 3.14159265358979323846 * sunOneMinusCos(); }
     Spectrum sunNormalIrradiance() const;
 
     // Irradiance of a horizontal surface from the sky (numerically integrated) and the sun.

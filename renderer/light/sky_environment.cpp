@@ -28,8 +28,7 @@ EnvironmentMap bakeSky(const PreethamSky& sky, int width) {
 SunDisk sunDisk(const PreethamSky& sky) {
     SunDisk sun;
     sun.direction = sky.parameters().sunDirection;
-    double h = std::sin(0.5 * sky.parameters().sunAngularRadius);
-    sun.oneMinusCosRadius = float(2.0 * h * h);
+    sun.oneMinusCosRadius = float(sky.sunOneMinusCos());
     sun.radiance = sky.sunRadiance();
     return sun;
 }

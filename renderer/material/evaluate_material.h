@@ -1,7 +1,8 @@
 // The one step from a material at a hit to its BSDF: the shading normal after normal or bump
 // maps, the shading frame, texture lookups, then the material's model: the lab tree (after the
-// Pm rule) collapsed for the outgoing direction, or glTF's metallic-roughness BRDF. Everything a material's value depends on at a hit goes through here, so
-// new maps and lobes have one place to go.
+// Pm rule) collapsed for the outgoing direction, or glTF's metallic-roughness BRDF. Everything a
+// material's value depends on at a hit goes through here, so new maps and lobes have one place
+// to go; so does its emission, for hits and light samples alike.
 #pragma once
 
 #include "material/bsdf.h"
@@ -16,6 +17,12 @@ struct ShadingPoint {
     Vec3 wo;   // outgoing direction in the frame
     Bsdf bsdf;
 };
+
+// Radiance a material emits at texture coordinates uv: Ke, times its emission texture (glTF).
+inline Spectrum emittedRadiance(const Material& m, const TextureCache& textures, Vec2 uv, const Footprint& footprint) {
+    if (!m.emissionMap.used()) return m.emission;
+    return m.emission * textures.color(m.emissionMap, uv, footprint);
+}
 
 // The shading normal after a normal map (tangent space, y along increasing v) or a bump map
 // (the surface displaced along n by -bm * height).

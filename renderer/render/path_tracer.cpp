@@ -68,11 +68,9 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
         const Material& m = scene_.materials[sp.material];
         coneWidth += pixelSpread_ * hit.t;
         if (m.isTextured()) addTextureCoordinates(sp, tri, scene_, tangents_, hit, ray.dir, coneWidth);
-        if (m.isEmissive()) {
-            Spectrum Le = m.emission;
-            if (m.emissionMap.used()) Le *= scene_.textures->color(m.emissionMap, sp.uv, sp.footprint);
-            L += beta * Le * hitWeight(lights_.emitterOfTriangle(hit.prim), hit.t);
-        }
+        if (m.isEmissive())
+            L += beta * emittedRadiance(m, *scene_.textures, sp.uv, sp.footprint) *
+                 hitWeight(lights_.emitterOfTriangle(hit.prim), hit.t);
         if (depth == settings_.maxDepth) break;
         ShadingPoint shading = evaluateMaterial(m, *scene_.textures, sp, -ray.dir, settings_.hemisphere);
         const Frame& frame = shading.frame;

@@ -136,6 +136,12 @@ struct Scene {
     Environment environment;
 
     size_t triangleCount() const { return triPositions.size(); }
+    // Texture coordinates at barycentrics (b1, b2) of triangle t; (0, 0) where it has none.
+    Vec2 uvAt(size_t t, float b1, float b2) const {
+        if (triUvs.empty() || triUvs[t].x < 0) return Vec2(0.0f);
+        const glm::ivec3& ti = triUvs[t];
+        return (1.0f - b1 - b2) * uvs[ti.x] + b1 * uvs[ti.y] + b2 * uvs[ti.z];
+    }
 };
 
 } // namespace pt
