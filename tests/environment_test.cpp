@@ -178,15 +178,7 @@ TEST(EnvironmentRender, ConstantMapIsAFurnace) {
 TEST(EnvironmentRender, StrategiesAgreeUnderASmallSun) {
     Scene scene = groundScene();
     scene.environment.map = sunMap(22, 9);
-    RenderSettings mis;
-    mis.seed = 5;
-    Rendered reference = render(scene, 32, 24, 1024, mis);
-    for (LightSampling mode : {LightSampling::Nee, LightSampling::Bsdf}) {
-        RenderSettings s;
-        s.lightSampling = mode;
-        s.seed = 9;
-        expectSameImage(render(scene, 32, 24, mode == LightSampling::Bsdf ? 4096 : 1024, s), reference, modeName(mode));
-    }
+    expectStrategiesAgree(scene);
 }
 
 // The lab's two-tone sky written as a map renders as the built-in sky does.

@@ -300,15 +300,7 @@ TEST(SkyRender, StrategiesAgree) {
     SkyParameters p = skyAt(30.0, 230.0, 3.0f);
     p.sunAngularRadius = 3.0 * kDeg;
     scene.environment = skyEnvironment(p);
-    RenderSettings mis;
-    mis.seed = 5;
-    Rendered reference = render(scene, 32, 24, 1024, mis);
-    for (LightSampling mode : {LightSampling::Nee, LightSampling::Bsdf}) {
-        RenderSettings s;
-        s.lightSampling = mode;
-        s.seed = 9;
-        expectSameImage(render(scene, 32, 24, mode == LightSampling::Bsdf ? 4096 : 1024, s), reference, modeName(mode));
-    }
+    expectStrategiesAgree(scene);
 }
 
 } // namespace

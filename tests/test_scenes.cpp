@@ -141,6 +141,18 @@ Rendered render(const Scene& scene, int width, int height, uint32_t spp, const R
     return r;
 }
 
+void expectStrategiesAgree(const Scene& scene) {
+    RenderSettings mis;
+    mis.seed = 5;
+    Rendered reference = render(scene, 32, 24, 1024, mis);
+    for (LightSampling mode : {LightSampling::Nee, LightSampling::Bsdf}) {
+        RenderSettings s;
+        s.lightSampling = mode;
+        s.seed = 9;
+        expectSameImage(render(scene, 32, 24, mode == LightSampling::Bsdf ? 4096 : 1024, s), reference, modeName(mode));
+    }
+}
+
 RegionStats regionStats(const Rendered& r, int x0, int y0, int x1, int y1) {
     glm::dvec3 sum(0.0), var(0.0);
     double n = 0;

@@ -59,6 +59,9 @@ Image toImage(const Rendered& r);
 
 // Asserts that `test` and `reference` agree within noise, block by block (image/compare.h).
 void expectSameImage(const Rendered& test, const Rendered& reference, const std::string& what);
+// Asserts that light sampling alone and BSDF sampling alone (4096 spp) converge to MIS's image
+// (1024 spp) of `scene` at 32 x 24.
+void expectStrategiesAgree(const Scene& scene);
 
 // Textures for tests: a map of one, a 64 x 64 black-and-white checker of 8 x 8 squares (RGB), a
 // data ramp rising from 0 to 1 across u in `width` texels (one channel).

@@ -207,7 +207,9 @@ def look_at(obj, position, target, up):
     obj.matrix_world = mathutils.Matrix(m.tolist())  # rows; a nested list would be read as columns
 
 
-def build(scene_path, camera_index, width, height, max_depth):
+def new_scene(width, height):
+    """An empty Cycles scene on the CPU: no adaptive sampling or denoising, a box filter of one
+    pixel, float RGB EXR output with the Standard view."""
     bpy.ops.wm.read_factory_settings(use_empty=True)
     scene = bpy.context.scene
     scene.render.engine = "CYCLES"
@@ -215,13 +217,6 @@ def build(scene_path, camera_index, width, height, max_depth):
     c.device = "CPU"
     c.use_adaptive_sampling = False
     c.use_denoising = False
-    c.max_bounces = c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = max_depth - 1
-    c.transparent_max_bounces = max_depth
-    c.volume_bounces = 0
-    c.caustics_reflective = c.caustics_refractive = True
-    c.blur_glossy = 0.0
-    c.sample_clamp_direct = c.sample_clamp_indirect = 0.0
-    c.light_sampling_threshold = 0.0
     c.pixel_filter_type = "BOX"
     c.filter_width = 1.0
     scene.render.resolution_x, scene.render.resolution_y = width, height
@@ -230,6 +225,30 @@ def build(scene_path, camera_index, width, height, max_depth):
     scene.render.image_settings.color_depth = "32"
     scene.render.image_settings.color_mode = "RGB"
     scene.view_settings.view_transform = "Standard"
+    return scene
+
+
+def add_camera(scene, position, target, up, fov_y):
+    """The lab's pinhole camera: a vertical field of view in degrees."""
+    data = bpy.data.cameras.new("camera")
+    data.sensor_fit = "VERTICAL"
+    data.angle_y = math.radians(fov_y)
+    obj = bpy.data.objects.new("camera", data)
+    scene.collection.objects.link(obj)
+    look_at(obj, position, target, up)
+    scene.camera = obj
+
+
+def build(scene_path, camera_index, width, height, max_depth):
+    scene = new_scene(width, height)
+    c = scene.cycles
+    c.max_bounces = c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = max_depth - 1
+    c.transparent_max_bounces = max_depth
+    c.volume_bounces = 0
+    c.caustics_reflective = c.caustics_refractive = True
+    c.blur_glossy = 0.0
+    c.sample_clamp_direct = c.sample_clamp_indirect = 0.0
+    c.light_sampling_threshold = 0.0
 
     mtllib, groups = parse_obj(scene_path)
     materials, lights, cameras, environment = parse_mtl(mtllib)
@@ -261,13 +280,7 @@ def build(scene_path, camera_index, width, height, max_depth):
     tree.links.new(bg.outputs[0], out.inputs["Surface"])
 
     cam = cameras[camera_index]
-    data = bpy.data.cameras.new("camera")
-    data.sensor_fit = "VERTICAL"
-    data.angle_y = math.radians(cam["fov"])
-    obj = bpy.data.objects.new("camera", data)
-    scene.collection.objects.link(obj)
-    look_at(obj, cam["position"], cam["target"], cam["up"])
-    scene.camera = obj
+    add_camera(scene, cam["position"], cam["target"], cam["up"], cam["fov"])
     return scene
 
 

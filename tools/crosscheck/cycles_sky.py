@@ -11,16 +11,13 @@ y-up and Blender's z-up: a direction (x, y, z) of pt is (x, -z, y) in the sky te
                   --sun-elevation DEG --sun-azimuth DEG --turbidity T --fov DEG
 """
 import argparse
-import math
 import os
 import sys
 
 import bpy
-import mathutils
-import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cycles_lab import look_at  # noqa: E402
+from cycles_lab import add_camera, new_scene  # noqa: E402
 from lab_scene import sun_direction  # noqa: E402
 
 
@@ -38,22 +35,8 @@ def main():
     a = ap.parse_args()
     width, height = (int(x) for x in a.res.lower().split("x"))
 
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-    scene = bpy.context.scene
-    scene.render.engine = "CYCLES"
-    c = scene.cycles
-    c.device = "CPU"
-    c.samples = a.spp
-    c.use_adaptive_sampling = False
-    c.use_denoising = False
-    c.pixel_filter_type = "BOX"
-    c.filter_width = 1.0
-    scene.render.resolution_x, scene.render.resolution_y = width, height
-    scene.render.resolution_percentage = 100
-    scene.render.image_settings.file_format = "OPEN_EXR"
-    scene.render.image_settings.color_depth = "32"
-    scene.render.image_settings.color_mode = "RGB"
-    scene.view_settings.view_transform = "Standard"
+    scene = new_scene(width, height)
+    scene.cycles.samples = a.spp
 
     world = bpy.data.worlds.new("sky")
     scene.world = world
@@ -83,13 +66,7 @@ def main():
     out = tree.nodes.new("ShaderNodeOutputWorld")
     tree.links.new(bg.outputs[0], out.inputs["Surface"])
 
-    data = bpy.data.cameras.new("camera")
-    data.sensor_fit = "VERTICAL"
-    data.angle_y = math.radians(a.fov)
-    cam = bpy.data.objects.new("camera", data)
-    scene.collection.objects.link(cam)
-    look_at(cam, [0, 0, 0], sun_direction(a.view_elevation, a.view_azimuth).tolist(), [0, 1, 0])
-    scene.camera = cam
+    add_camera(scene, [0, 0, 0], sun_direction(a.view_elevation, a.view_azimuth).tolist(), [0, 1, 0], a.fov)
     scene.render.filepath = a.out
     bpy.ops.render.render(write_still=True)
 
