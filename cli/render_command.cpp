@@ -54,6 +54,10 @@ options (default in brackets):
                          directly, 1 gives direct lighting [16]
   --light-sampling M     direct light by mis (light and BSDF sampling, weighted),
                          nee (light sampling only) or bsdf (BSDF sampling only) [mis]
+  --light-choice M       how next-event estimation picks an emitter: power, or tree
+                         (a light tree weighing each by distance and orientation as seen
+                         from the shading point; for many emitters); auto takes the
+                         tree with 2 or more lights and emissive triangles [auto]
   --hemisphere M         Lambert sampling, cosine or uniform (a diagnostic) [cosine]
   --sampler S            sample values: sobol (Owen-scrambled Sobol points) or random
                          (independent) [sobol]
@@ -178,6 +182,12 @@ RenderArgs parseArgs(int argc, char** argv) {
             else if (v == "nee") r.settings.lightSampling = LightSampling::Nee;
             else if (v == "bsdf") r.settings.lightSampling = LightSampling::Bsdf;
             else throw UsageError("option --light-sampling: expected mis, nee or bsdf, got \"" + v + "\"");
+        } else if (opt == "light-choice") {
+            std::string v = args.value(opt);
+            if (v == "auto") r.settings.lightChoice = LightChoice::Auto;
+            else if (v == "power") r.settings.lightChoice = LightChoice::Power;
+            else if (v == "tree") r.settings.lightChoice = LightChoice::Tree;
+            else throw UsageError("option --light-choice: expected auto, power or tree, got \"" + v + "\"");
         } else if (opt == "hemisphere") {
             std::string v = args.value(opt);
             if (v == "cosine") r.settings.hemisphere = HemisphereSampling::Cosine;
@@ -361,6 +371,7 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
 }
 
 const char* name(LightSampling m) { return m == LightSampling::Mis ? "mis" : m == LightSampling::Nee ? "nee" : "bsdf"; }
+const char* name(LightChoice c) { return c == LightChoice::Auto ? "auto" : c == LightChoice::Power ? "power" : "tree"; }
 const char* name(HemisphereSampling h) { return h == HemisphereSampling::Cosine ? "cosine" : "uniform"; }
 const char* name(SamplerKind k) { return k == SamplerKind::Sobol ? "sobol" : "random"; }
 
@@ -397,6 +408,7 @@ void addMetadata(Image& image, const RenderArgs& args, const Scene& scene, const
     integer("pt:maxDepth", args.settings.maxDepth);
     text("pt:sampler", name(args.settings.sampler));
     text("pt:lightSampling", name(args.settings.lightSampling));
+    text("pt:lightChoice", name(args.settings.lightChoice));
     text("pt:hemisphere", name(args.settings.hemisphere));
     real("pt:clamp", args.settings.clamp);
     real("pt:exposure", args.exposure);

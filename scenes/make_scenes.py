@@ -51,6 +51,11 @@ env_sun.exr: a 256x128 lat-long sky: a gradient from blue at the zenith to pale 
              a dim brown ground below it, and a one-texel sun of radiance 6,000 at elevation
              35 degrees towards -z rotated 40 degrees about +y (u = 0.25 + 40/360).
 env_marker.exr: a 64x32 black map with marker texels (see ENV_MARKERS) for the convention test.
+many_lights: a night square lit by 4,096 small lamps (8,192 emissive triangles, 0.1 wide) in a 64 x 64
+             grid 1.2 above a 40 x 40 ground, facing down, in four colours and powers that vary
+             across the grid; boxes stand among them and cast shadows, and two rough spheres
+             reflect them. Any one point sees a few lamps near it; choosing a lamp by power
+             alone wastes nearly every shadow ray on far ones (the light-tree study).
 env_probe:   a mirror ball right of centre, for looking at a map: the camera looks along -z, so the
              background in the middle of the image is -z (the red marker of env_marker.exr),
              and the ball reflects +x on its right and +z (behind the camera) near its middle.
@@ -505,6 +510,46 @@ def outdoor(name="outdoor", glass=True, sky=None):
                 "\tspecularroughness 0.2\n")
 
 
+def many_lights(n=64, size=40.0, lamp=0.1, height=1.2):
+    o = Obj()
+    o.use("Ground")
+    h = size / 2
+    o.quad((-h, 0, h), (h, 0, h), (h, 0, -h), (-h, 0, -h))
+    o.use("Night")  # a black dome: the lamps are the only light
+    o.quad((-h, 30, -h), (h, 30, -h), (h, 30, h), (-h, 30, h))
+    for a, b in [((-h, -h), (h, -h)), ((h, -h), (h, h)), ((h, h), (-h, h)), ((-h, h), (-h, -h))]:
+        o.quad((a[0], 0, a[1]), (b[0], 0, b[1]), (b[0], 30, b[1]), (a[0], 30, a[1]))
+    o.use("Stone")
+    for lo, hi in [((-1.0, 0, -2.0), (0.0, 0.8, -1.0)), ((1.5, 0, -4.0), (2.2, 2.0, -3.2)),
+                   ((-3.0, 0, -6.0), (-2.0, 0.5, -3.0)), ((3.0, 0, 1.0), (3.6, 0.9, 1.6))]:
+        o.box(lo, hi)
+    o.use("RoughMetal")
+    o.sphere((0.8, 0.5, -0.8), 0.5, rings=24, segments=48)
+    o.use("RoughPlastic")
+    o.sphere((-1.8, 0.4, 0.2), 0.4, rings=24, segments=48)
+    step = size / n
+    for i in range(n):
+        for j in range(n):
+            # Colours and powers in a pattern that does not repeat with the rows.
+            o.use("Lamp%d" % ((i * 3 + j * 5 + (i * j) % 7) % 4))
+            x, z, r = -h + (i + 0.5) * step, -h + (j + 0.5) * step, lamp / 2
+            o.quad((x - r, height, z - r), (x + r, height, z - r), (x + r, height, z + r), (x - r, height, z + r))
+    o.write(os.path.join(HERE, "many_lights.obj"), "many_lights.mtl",
+            "A night square under 4,096 small lamps: the light-tree study")
+    with open(os.path.join(HERE, "many_lights.mtl"), "w") as f:
+        f.write("# 8,192 emissive triangles and no other light: a black box closes the scene.\n\n")
+        f.write("newcamera Front\n\tcameraposition 0.0 2.2 5.0\n\tcameratarget 0.0 0.3 -2.0\n"
+                "\tcameraup 0.0 1.0 0.0\n\tcamerafov 50.0\n\n")
+        f.write("newmtl Ground\n\tKd 0.5 0.5 0.5\n\n")
+        f.write("newmtl Night\n\tKd 0 0 0\n\n")
+        f.write("newmtl Stone\n\tKd 0.6 0.55 0.5\n\n")
+        f.write("newmtl RoughMetal\n\tKd 0 0 0\n\tKs 0.9 0.9 0.9\n\tNi 1.5\n\tPm 1.0\n\tspecularroughness 0.15\n\n")
+        f.write("newmtl RoughPlastic\n\tKd 0.1 0.3 0.6\n\treflat0deg 0.05\n\treflat90deg 1.0\n"
+                "\tspecularroughness 0.1\n\n")
+        for k, ke in enumerate([(12, 11, 9), (18, 9, 4), (6, 9, 15), (36, 33, 27)]):
+            f.write("newmtl Lamp%d\n\tKd 0 0 0\n\tKe %d %d %d\n\n" % ((k,) + ke))
+
+
 if __name__ == "__main__":
     cornell_box()
     glass()
@@ -514,4 +559,5 @@ if __name__ == "__main__":
     env_maps()
     env_probe()
     outdoor()
+    many_lights()
     outdoor("sunlit", glass=False, sky=(("sunelevation", 30), ("sunazimuth", 220), ("turbidity", 3)))

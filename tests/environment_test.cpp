@@ -150,7 +150,7 @@ TEST(EnvironmentLight, ChosenByPowerBesideASphereLight) {
     ASSERT_NE(lights.environmentEmitter(), ~0u);
     // Bounds [-1, 1] x [0, 1.1] x [-1, 1]: R = sqrt(2^2 + 1.1^2 + 2^2) / 2; a constant 1 integrates to 4 pi.
     double radius = 0.5 * std::sqrt(9.21), env = kPi * radius * radius * 4.0 * kPi, sphere = 4.0 * kPi;
-    EXPECT_NEAR(lights.pmf(lights.environmentEmitter()), env / (env + sphere), 1e-4);
+    EXPECT_NEAR(lights.pmf(lights.environmentEmitter(), Vec3(0), Vec3(0)), env / (env + sphere), 1e-4);
     // A black map is no light at all.
     s.environment.map = mapFrom(16, 8, [](int, int) { return Spectrum(0.0f); });
     EXPECT_EQ(LightSet(s).environmentEmitter(), ~0u);

@@ -30,13 +30,13 @@ Scene sceneWithLights() {
 
 TEST(LightSet, EmittersChosenByPower) {
     Scene s = sceneWithLights();
-    LightSet lights(s);
+    LightSet lights(s, LightChoice::Power);
     ASSERT_EQ(lights.size(), 3u); // two lab lights and the one emissive triangle
     float sphere = 4 * kPi * 2.0f, point = 4 * kPi * 6.0f, tri = 2 * kPi * 2.0f * 2.0f; // area 2, mean Le 2
     float total = sphere + point + tri;
-    EXPECT_NEAR(lights.pmf(lights.emitterOfLight(0)), sphere / total, 1e-6f);
-    EXPECT_NEAR(lights.pmf(lights.emitterOfLight(1)), point / total, 1e-6f);
-    EXPECT_NEAR(lights.pmf(lights.emitterOfTriangle(0)), tri / total, 1e-6f);
+    EXPECT_NEAR(lights.pmf(lights.emitterOfLight(0), Vec3(0), Vec3(0)), sphere / total, 1e-6f);
+    EXPECT_NEAR(lights.pmf(lights.emitterOfLight(1), Vec3(0), Vec3(0)), point / total, 1e-6f);
+    EXPECT_NEAR(lights.pmf(lights.emitterOfTriangle(0), Vec3(0), Vec3(0)), tri / total, 1e-6f);
     EXPECT_EQ(lights.emitterOfTriangle(1), ~0u);
 }
 

@@ -45,7 +45,7 @@ float LightSet::punctualFalloff(const SphereLight& l, const Vec3& wi, float dist
     return f;
 }
 
-LightSet::LightSet(const Scene& scene) : scene_(scene) {
+LightSet::LightSet(const Scene& scene, LightChoice choice) : scene_(scene) {
     std::vector<double> power; // in double: 2 pi A Le can pass float's range
     lightEmitter_.resize(scene.lights.size());
     for (size_t i = 0; i < scene.lights.size(); ++i) {
@@ -94,6 +94,7 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
             power.push_back(2.0 * kPi * double(area) * double(average(m.emission)) * mean);
         }
     }
+    boundedCount_ = uint32_t(emitters_.size());
     // Distant lights are chosen by the power that crosses the scene's bounding disk, pi R^2 E.
     const double radius = sceneBoundingRadius(scene);
     // The sky's sampling density is baked here, once per render, not when a scene is loaded.
@@ -126,6 +127,62 @@ LightSet::LightSet(const Scene& scene) : scene_(scene) {
         power.push_back(kPi * radius * radius * double(average(d.irradiance)));
     }
     distribution_ = Distribution1D(power);
+
+    bool tree = choice == LightChoice::Tree ? boundedCount_ >= 1 : choice == LightChoice::Auto && boundedCount_ >= 2;
+    if (tree && emitters_.size() > 1) {
+        std::vector<LightBounds> bounds;
+        double boundedPower = 0.0;
+        for (uint32_t i = 0; i < boundedCount_; ++i) {
+            bounds.push_back(boundsOf(emitters_[i], power[i]));
+            boundedPower += power[i];
+        }
+        tree_ = LightTree(bounds);
+        std::vector<double> top{boundedPower};
+        top.insert(top.end(), power.begin() + boundedCount_, power.end());
+        distantOrTree_ = Distribution1D(top);
+    }
+}
+
+// Where a bounded emitter is, where it faces and its power, for the light tree.
+LightBounds LightSet::boundsOf(const Emitter& e, double power) const {
+    LightBounds b;
+    b.phi = float(std::min(power, 1e30));
+    if (e.kind == Emitter::Kind::Triangle) {
+        const glm::uvec3& tri = scene_.triPositions[e.index];
+        const Vec3 &p0 = scene_.positions[tri[0]], &p1 = scene_.positions[tri[1]], &p2 = scene_.positions[tri[2]];
+        b.lo = glm::min(p0, glm::min(p1, p2));
+        b.hi = glm::max(p0, glm::max(p1, p2));
+        b.axis = safeNormalize(glm::cross(p1 - p0, p2 - p0));
+        b.cosThetaO = 1.0f;
+        b.twoSided = true;
+        return b;
+    }
+    b.lo = e.center - e.radius;
+    b.hi = e.center + e.radius;
+    if (const SphereLight& l = scene_.lights[e.index]; l.isSpot()) {
+        b.axis = l.spotDirection;
+        b.cosThetaO = 1.0f;
+        b.cosThetaE = l.cosOuter;
+    }
+    return b;
+}
+
+uint32_t LightSet::chooseFromTree(float u, const Vec3& p, const Vec3& n, float& pmf) const {
+    float pTop, uTree;
+    size_t k = distantOrTree_.sample(u, &pTop, &uTree);
+    if (k > 0) {
+        pmf = pTop;
+        return boundedCount_ + uint32_t(k) - 1;
+    }
+    float pTree;
+    uint32_t e = tree_.sample(p, n, uTree, pTree);
+    pmf = pTop * pTree;
+    return e;
+}
+
+float LightSet::pmfFromTree(size_t i, const Vec3& p, const Vec3& n) const {
+    if (i >= boundedCount_) return distantOrTree_.pmf(i - boundedCount_ + 1);
+    return distantOrTree_.pmf(0) * tree_.pmf(p, n, uint32_t(i));
 }
 
 LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {

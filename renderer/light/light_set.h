@@ -1,10 +1,12 @@
-// Every emitter of a scene in one list, chosen for next-event estimation in proportion to its
-// power: sphere lights, point lights, emissive triangles and an environment map. Built once per
-// render.
+// Every emitter of a scene in one list: sphere lights, point lights, emissive triangles, an
+// environment map, the sun and directional lights. Next-event estimation chooses one by power,
+// or, with many bounded emitters, the distant ones by power and the bounded ones through a light
+// tree that weighs them as seen from the shading point. Built once per render.
 #pragma once
 
 #include "core/math.h"
 #include "light/environment_light.h"
+#include "light/light_tree.h"
 #include "sampling/distribution1d.h"
 #include "scene/scene.h"
 
@@ -37,21 +39,28 @@ struct LightSample {
 
 class LightSet {
 public:
-    explicit LightSet(const Scene& scene);
+    explicit LightSet(const Scene& scene, LightChoice choice = LightChoice::Auto);
 
     bool empty() const { return emitters_.empty(); }
     size_t size() const { return emitters_.size(); }
     const Emitter& emitter(size_t i) const { return emitters_[i]; }
 
-    // Picks an emitter for next-event estimation.
-    size_t choose(float u, float& pmf) const {
+    // Picks an emitter for next-event estimation at p, whose shading normal is n (0: none).
+    // Returns ~0u with pmf 0 when the tree finds no emitter that can light p.
+    uint32_t choose(float u, const Vec3& p, const Vec3& n, float& pmf) const {
         if (emitters_.size() == 1) { // the common case of one lab light: no search
             pmf = 1.0f;
             return 0;
         }
-        return distribution_.sample(u, &pmf);
+        if (!usesTree()) return uint32_t(distribution_.sample(u, &pmf));
+        return chooseFromTree(u, p, n, pmf);
     }
-    float pmf(size_t emitterIndex) const { return distribution_.pmf(emitterIndex); }
+    // The probability that choose() at p picks emitter i.
+    float pmf(size_t i, const Vec3& p, const Vec3& n) const {
+        if (emitters_.size() == 1) return 1.0f;
+        return usesTree() ? pmfFromTree(i, p, n) : distribution_.pmf(i);
+    }
+    bool usesTree() const { return !tree_.empty(); }
 
     // Emitter index of a sphere light or an emissive triangle, for MIS when a BSDF ray hits it.
     uint32_t emitterOfLight(uint32_t lightIndex) const { return lightEmitter_[lightIndex]; }
@@ -72,9 +81,18 @@ public:
     static float punctualFalloff(const SphereLight& l, const Vec3& wi, float distance);
 
 private:
+    uint32_t chooseFromTree(float u, const Vec3& p, const Vec3& n, float& pmf) const;
+    float pmfFromTree(size_t i, const Vec3& p, const Vec3& n) const;
+    LightBounds boundsOf(const Emitter& e, double power) const;
+
     const Scene& scene_;
     std::vector<Emitter> emitters_;
-    Distribution1D distribution_;
+    Distribution1D distribution_; // all emitters by power
+    // With a tree: the bounded emitters (indices below boundedCount_) are its leaves, and
+    // `distantOrTree_` chooses between the tree (item 0) and each distant emitter by power.
+    LightTree tree_;
+    Distribution1D distantOrTree_;
+    uint32_t boundedCount_ = 0;
     std::vector<uint32_t> lightEmitter_;
     std::vector<uint32_t> triangleEmitter_; // empty unless the scene has emissive triangles
     std::unique_ptr<EnvironmentMap> skyDensity_; // the Preetham sky, baked: what samples it

@@ -30,6 +30,7 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
     bool deltaBefore = true;   // camera or delta lobe before this hit: emitters seen count fully
     float prevPdf = 0.0f;      // BSDF pdf of the direction that led here (non-delta)
     Vec3 prevP(0.0f);          // where that direction started
+    Vec3 prevN(0.0f);          // and the shading normal there (the light tree weighs emitters by it)
     // Ray cone for texture footprints: width at the ray's origin. It keeps the camera's spread
     // after a bounce rather than the lobe's: filtering a texture over a rough lobe's footprint
     // blurs it against the light that varies across it, a bias the crosscheck measured (+0.3 %).
@@ -40,7 +41,7 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
     auto hitWeight = [&](uint32_t emitter, float distance) {
         if (deltaBefore || !sampleLights || emitter == ~0u) return 1.0f;
         if (!weighHits) return 0.0f; // next-event estimation already counted it
-        float lightPdf = lights_.pmf(emitter) * lights_.pdf(emitter, prevP, ray.dir, distance);
+        float lightPdf = lights_.pmf(emitter, prevP, prevN) * lights_.pdf(emitter, prevP, ray.dir, distance);
         return powerHeuristic(prevPdf, lightPdf);
     };
 
@@ -91,8 +92,8 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
         Vec2 uLightPoint = sampler.get2D();
         if (sampleLights && bsdf.hasNonDelta()) {
             float pmf;
-            size_t e = lights_.choose(uLight, pmf);
-            LightSample ls = lights_.sample(e, sp.p, uLightPoint);
+            uint32_t e = lights_.choose(uLight, sp.p, frame.n, pmf);
+            LightSample ls = pmf > 0.0f ? lights_.sample(e, sp.p, uLightPoint) : LightSample{};
             Vec3 wiLocal = frame.toLocal(ls.wi);
             // The shading and the geometric normal must agree on the side wi leaves from, or the
             // shadow ray would start on the wrong side of the surface.
@@ -133,6 +134,7 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
         deltaBefore = bs.delta;
         prevPdf = bs.pdf;
         prevP = sp.p;
+        prevN = frame.n;
 
         // Russian roulette on the throughput without the refraction scaling, so paths inside
         // glass are not cut for carrying radiance that is only compressed.

@@ -1,6 +1,7 @@
 // Options that change how a path is traced (not where the image goes).
 #pragma once
 
+#include "light/light_tree.h"
 #include "material/lab_bsdf.h"
 
 #include <cstdint>
@@ -18,6 +19,7 @@ struct RenderSettings {
     int maxDepth = 16;   // most scattering events on a path: 0 = emitters seen directly, 1 = direct light
     uint64_t seed = 0;
     LightSampling lightSampling = LightSampling::Mis;
+    LightChoice lightChoice = LightChoice::Auto;
     HemisphereSampling hemisphere = HemisphereSampling::Cosine;
     SamplerKind sampler = SamplerKind::Sobol;
     // Opt-in firefly clamp: a sample whose largest channel exceeds `clamp` is scaled down to it.

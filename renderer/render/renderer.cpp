@@ -25,7 +25,7 @@ float pixelSpread(const Camera& camera, int height, uint32_t spp) {
 Renderer::Renderer(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
                    const RenderSettings& settings, uint32_t spp)
     : scene_(scene), settings_(settings), triangles_(buildShadingTriangles(scene)), tangents_(buildCornerTangents(scene)),
-      lights_(scene), camera_(camera, width, height),
+      lights_(scene, settings.lightChoice), camera_(camera, width, height),
       tracer_(scene, triangles_, tangents_, accel, lights_, settings_, pixelSpread(camera, height, spp)),
       width_(width), height_(height),
       tilesX_((width + kTileSize - 1) / kTileSize), tilesY_((height + kTileSize - 1) / kTileSize) {}
