@@ -24,7 +24,8 @@ struct Method {
     RenderSettings settings;
 };
 
-std::vector<Method> methods() {
+// The study of sampling methods (the lab's path to MIS), or of how an emitter is chosen.
+std::vector<Method> methods(const std::string& study) {
     auto make = [](HemisphereSampling h, LightSampling l, SamplerKind s) {
         RenderSettings r;
         r.hemisphere = h;
@@ -36,6 +37,19 @@ std::vector<Method> methods() {
     using H = HemisphereSampling;
     using L = LightSampling;
     using S = SamplerKind;
+    if (study == "light-choice") {
+        auto choose = [&](LightChoice c, L l) {
+            RenderSettings r = make(H::Cosine, l, S::Sobol);
+            r.lightChoice = c;
+            return r;
+        };
+        return {
+            {"NEE, emitter by power", choose(LightChoice::Power, L::Nee)},
+            {"NEE, emitter by light tree", choose(LightChoice::Tree, L::Nee)},
+            {"MIS, emitter by power", choose(LightChoice::Power, L::Mis)},
+            {"MIS, emitter by light tree (default)", choose(LightChoice::Tree, L::Mis)},
+        };
+    }
     return {
         {"uniform hemisphere, BSDF only", make(H::Uniform, L::Bsdf, S::Random)},
         {"uniform hemisphere + NEE (the lab's start)", make(H::Uniform, L::Nee, S::Random)},
@@ -65,11 +79,13 @@ struct Options {
     int threads = 0;
     std::string outDir = "bench/results";
     std::string env; // an environment map, as pt render --env
+    std::string study = "sampling";
 };
 
 int usage(int status) {
     std::fputs("usage: pt-bench converge [--scene PATH] [--name NAME] [--res WxH] [--budget SECONDS]\n"
                "                        [--reference-spp N] [--threads N] [--out DIR] [--env MAP]\n"
+               "                        [--study sampling|light-choice]\n"
                "defaults: lab cornell, name from the scene file, 256x256, 16 s per method, 4096-spp\n"
                "          reference cached in DIR, CSV to DIR/converge_NAME.csv, DIR = bench/results\n",
                status == 0 ? stdout : stderr);
@@ -95,7 +111,10 @@ int runConverge(int argc, char** argv) {
         else if (a == "--threads") o.threads = std::stoi(next());
         else if (a == "--out") o.outDir = next();
         else if (a == "--env") o.env = next();
-        else if (a == "-h" || a == "--help") return usage(0);
+        else if (a == "--study") {
+            o.study = next();
+            if (o.study != "sampling" && o.study != "light-choice") return usage(2);
+        } else if (a == "-h" || a == "--help") return usage(0);
         else return usage(2);
     }
     if (o.name.empty()) o.name = std::filesystem::path(o.scene).stem().string();
@@ -140,7 +159,7 @@ int runConverge(int argc, char** argv) {
     std::string csvPath = o.outDir + "/converge_" + o.name + ".csv";
     std::ostringstream csv;
     csv << "method,spp,seconds,rel_mse,renders\n"; // seconds and rel_mse: means over the renders
-    for (const Method& m : methods()) {
+    for (const Method& m : methods(o.study)) {
         std::printf("  %-44s", m.name);
         for (uint32_t spp = 1;; spp *= 2) {
             // One render's error is itself noisy (a firefly more or less), worst at low sample
