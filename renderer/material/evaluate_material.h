@@ -62,10 +62,6 @@ inline ShadingPoint evaluateMaterial(const Material& m, const TextureCache& text
     if (glm::dot(wo, n) * glm::dot(wo, sp.ng) <= 0.0f) n = sp.ng;
     ShadingPoint s;
     if (m.model == MaterialModel::MetalRough) {
-        // Opaque and two-sided: the frame turns to the side wo arrives from.
-        if (glm::dot(wo, n) < 0.0f) n = -n;
-        s.frame = Frame(n);
-        s.wo = s.frame.toLocal(wo);
         Spectrum base = m.kd;
         float alpha = m.roughness, metallic = std::max(0.0f, m.metallic);
         if (m.isTextured()) {
@@ -74,7 +70,23 @@ inline ShadingPoint evaluateMaterial(const Material& m, const TextureCache& text
             if (m.roughnessMap.used()) alpha *= sqr(std::clamp(textures.scalar(m.roughnessMap, sp.uv, sp.footprint), 0.0f, 1.0f));
             if (m.metallicMap.used()) metallic *= std::clamp(textures.scalar(m.metallicMap, sp.uv, sp.footprint), 0.0f, 1.0f);
         }
-        s.bsdf = MetalRoughBsdf::make(base, metallic, alpha, m.eta, s.wo.z);
+        if (m.transparency > 0.0f) {
+            // KHR_materials_transmission: the lab tree's FresnelBlend over refraction (with the
+            // ior) and Lambert, its refraction tinted by the base colour; metal does not transmit.
+            // The frame keeps the outside, which refraction needs.
+            s.frame = Frame(n);
+            s.wo = s.frame.toLocal(wo);
+            LabParameters p = labParameters(m, base, base, alpha, metallic);
+            p.transparency *= 1.0f - metallic;
+            p.refractTint = base;
+            s.bsdf = LabBsdf::make(p, s.wo.z, hemisphere);
+            return s;
+        }
+        // Opaque and two-sided: the frame turns to the side wo arrives from.
+        if (glm::dot(wo, n) < 0.0f) n = -n;
+        s.frame = Frame(n);
+        s.wo = s.frame.toLocal(wo);
+        s.bsdf = MetalRoughBsdf::make(base, metallic, alpha, m.eta, s.wo.z, m.ks, m.specular);
         return s;
     }
     s.frame = Frame(n);

@@ -12,7 +12,7 @@ LabBsdf LabBsdf::make(const LabParameters& m, float cosThetaO, HemisphereSamplin
     Spectrum wF = m.blend * schlickFresnel(m.r0, cosThetaO);
     Spectrum rest = Spectrum(1.0f) - wF;
     b.mirror = wF * m.ks;
-    b.refract = rest * m.transparency;
+    b.refract = rest * m.transparency * m.refractTint;
     b.diffuse = rest * (1.0f - m.transparency) * m.kd;
 
     float am = average(b.mirror), at = average(b.refract), ad = average(b.diffuse);

@@ -55,6 +55,7 @@ struct LabParameters {
     Spectrum kd{0.7f}, ks{1.0f}, r0{0.0f};
     float blend = 0.0f, transparency = 0.0f, eta = 1.0f;
     float alpha = 0.001f; // GGX roughness of Spec and Refr; <= kSmoothAlpha: delta lobes
+    Spectrum refractTint{1.0f}; // multiplies Refr: white in the lab, the base colour for glTF transmission
 };
 
 // The parameters of a material whose Kd, after its texture, is `kd`. With Pm (the PBR

@@ -13,18 +13,20 @@ inline float schlickWeight(float cosTheta) {
 
 } // namespace
 
-MetalRoughBsdf MetalRoughBsdf::make(const Spectrum& baseColor, float metallic, float alpha, float ior, float cosThetaO) {
+MetalRoughBsdf MetalRoughBsdf::make(const Spectrum& baseColor, float metallic, float alpha, float ior, float cosThetaO,
+                                    const Spectrum& specularColor, float specularWeight) {
     MetalRoughBsdf b;
     b.baseColor = baseColor;
     b.metallic = std::clamp(metallic, 0.0f, 1.0f);
     b.alpha = alpha > kSmoothAlpha ? alpha : 0.0f;
-    b.f0 = sqr((ior - 1.0f) / (ior + 1.0f));
+    b.f0 = glm::min(sqr((ior - 1.0f) / (ior + 1.0f)) * specularColor, Spectrum(1.0f));
+    b.specular = std::clamp(specularWeight, 0.0f, 1.0f);
     // Lobe weights at wo, with Fresnel at the normal: the sampling estimate of each lobe's share.
     float w = schlickWeight(cosThetaO);
-    float fd = b.f0 + (1.0f - b.f0) * w;
+    Spectrum fd = b.f0 + (Spectrum(1.0f) - b.f0) * w;
     Spectrum fm = baseColor + (Spectrum(1.0f) - baseColor) * w;
-    float specular = (1.0f - b.metallic) * fd + b.metallic * average(fm);
-    float diffuse = (1.0f - b.metallic) * (1.0f - fd) * average(baseColor);
+    float specular = (1.0f - b.metallic) * b.specular * average(fd) + b.metallic * average(fm);
+    float diffuse = (1.0f - b.metallic) * (1.0f - b.specular * maxComponent(fd)) * average(baseColor);
     float sum = specular + diffuse;
     if (cosThetaO > 0.0f && sum > 0.0f) {
         b.pSpecular = specular / sum;
@@ -39,14 +41,14 @@ Spectrum MetalRoughBsdf::evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) con
     Vec3 h = safeNormalize(wo + wi);
     float vh = glm::dot(wo, h);
     float w = schlickWeight(vh);
-    float fd = f0 + (1.0f - f0) * w;
-    Spectrum f = ((1.0f - metallic) * (1.0f - fd) * kInvPi * wi.z) * baseColor;
+    Spectrum fd = f0 + (Spectrum(1.0f) - f0) * w;
+    Spectrum f = ((1.0f - metallic) * (1.0f - specular * maxComponent(fd)) * kInvPi * wi.z) * baseColor;
     pdf = pDiffuse * wi.z * kInvPi;
     if (!smooth() && h.z > 0.0f) {
         Spectrum fm = baseColor + (Spectrum(1.0f) - baseColor) * w;
         // S |cos theta_i| = D G2 / (4 cos theta_o).
         float s = ggxD(h, alpha) * smithG2HeightCorrelated(wo, wi, h, alpha) / (4.0f * wo.z);
-        f += s * ((1.0f - metallic) * Spectrum(fd) + metallic * fm);
+        f += s * ((1.0f - metallic) * specular * fd + metallic * fm);
         pdf += pSpecular * visibleNormalPdf(wo, h, alpha) * reflectionJacobian(wi, h);
     }
     return f;
@@ -59,7 +61,7 @@ bool MetalRoughBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) 
             // The mirror, with Fresnel at the normal (h = n).
             float w = schlickWeight(wo.z);
             Spectrum fm = baseColor + (Spectrum(1.0f) - baseColor) * w;
-            Spectrum lobe = (1.0f - metallic) * Spectrum(f0 + (1.0f - f0) * w) + metallic * fm;
+            Spectrum lobe = (1.0f - metallic) * specular * (f0 + (Spectrum(1.0f) - f0) * w) + metallic * fm;
             out.wi = Vec3(-wo.x, -wo.y, wo.z);
             out.weight = lobe / pSpecular;
             out.pdf = 0.0f;

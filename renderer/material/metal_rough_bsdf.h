@@ -1,11 +1,13 @@
 // glTF 2.0's metallic-roughness BRDF (the specification's Appendix B) at one hit:
 //
 //   f          = (1 - metallic) dielectric + metallic metal
-//   dielectric = (1 - F_d(v.h)) baseColor / pi + F_d(v.h) S
+//   dielectric = (1 - s max(F_d(v.h))) baseColor / pi + s F_d(v.h) S
 //   metal      = F_m(v.h) S
 //   S          = D(h) G2(v, l) / (4 |n.v| |n.l|),  GGX with alpha = roughness^2, G2 height-correlated
-//   F_d        = F0 + (1 - F0)(1 - |v.h|)^5, F0 = ((ior - 1) / (ior + 1))^2 (0.04 for ior 1.5)
+//   F_d        = F0 + (1 - F0)(1 - |v.h|)^5, F0 = min(((ior - 1) / (ior + 1))^2 specularColor, 1)
 //   F_m        = baseColor + (1 - baseColor)(1 - |v.h|)^5
+// where s and specularColor are KHR_materials_specular's (1 and white without it: then F0 = 0.04
+// for ior 1.5 and the dielectric is the core specification's fresnel_mix).
 //
 // Fresnel is taken at the half vector, as the specification writes it; the specular lobe has no
 // multiple-scattering compensation, so rough metals lose energy as the lab's rough lobes do.
@@ -25,10 +27,12 @@ struct MetalRoughBsdf {
     Spectrum baseColor{1.0f};
     float metallic = 0.0f;
     float alpha = 0.0f; // 0: smooth (delta) specular lobe
-    float f0 = 0.04f;   // dielectric reflectance at normal incidence
+    Spectrum f0{0.04f}; // dielectric reflectance at normal incidence
+    float specular = 1.0f; // s, the dielectric's specular weight
     float pSpecular = 0.0f, pDiffuse = 0.0f;
 
-    static MetalRoughBsdf make(const Spectrum& baseColor, float metallic, float alpha, float ior, float cosThetaO);
+    static MetalRoughBsdf make(const Spectrum& baseColor, float metallic, float alpha, float ior, float cosThetaO,
+                               const Spectrum& specularColor = Spectrum(1.0f), float specular = 1.0f);
 
     bool smooth() const { return alpha <= 0.0f; }
     bool hasNonDelta() const { return pDiffuse > 0.0f || (!smooth() && pSpecular > 0.0f); }

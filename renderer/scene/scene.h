@@ -50,7 +50,8 @@ struct SphereLight {
 
 // Which BSDF a material is: the lab's tree (OBJ + MTL), or glTF 2.0's metallic-roughness BRDF
 // (material/metal_rough_bsdf.h), whose base colour is kd, alpha roughness, metallic and eta its
-// ior, each texture multiplying its factor.
+// ior, each texture multiplying its factor; ks and specular are KHR_materials_specular's colour
+// and weight, transparency KHR_materials_transmission's factor.
 enum class MaterialModel : uint8_t { Lab, MetalRough };
 
 // A light at infinity in one direction (glTF's directional light): irradiance on a surface facing it.
@@ -85,6 +86,7 @@ struct Material {
     float metallic = -1.0f;       // Pm in [0, 1], applied when the material is evaluated; < 0: not given
     float alpha = 1.0f;           // coverage multiplier of map_d (d, where map_d is given)
     float alphaCutoff = -1.0f;    // >= 0: coverage is 1 at or above it and 0 below (glTF MASK)
+    float specular = 1.0f;        // glTF KHR_materials_specular's specularFactor
     Spectrum emission{0.0f};      // emitted radiance, both sides (Ke, emittance)
 
     bool isEmissive() const { return !isBlack(emission); }
