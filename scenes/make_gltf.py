@@ -366,6 +366,89 @@ def bin_and_image():
     g.write("bin_and_image.gltf", external=True)
 
 
+def cornell_box():
+    """scenes/cornell_box.obj as glTF: the same triangles (read from the OBJ, quads split as pt
+    splits them), Lambert walls through KHR_materials_specular's specularFactor 0, the lamp's Ke
+    as emissiveFactor times KHR_materials_emissive_strength, and the MTL's camera. The OBJ's
+    TallBox has a Fresnel-blended mirror that glTF cannot say; here it is Lambert only."""
+    obj = os.path.join(HERE, "..", "cornell_box.obj")
+    verts, groups, current = [], {}, None
+    for line in open(obj):
+        t = line.split()
+        if not t:
+            continue
+        if t[0] == "v":
+            verts.append([float(x) for x in t[1:4]])
+        elif t[0] == "usemtl":
+            current = groups.setdefault(t[1], [])
+        elif t[0] == "f":
+            idx = [int(x.split("/")[0]) - 1 for x in t[1:]]
+            for k in range(1, len(idx) - 1):
+                current.append((idx[0], idx[k], idx[k + 1]))
+    colors = {"Floor": [0.75] * 3, "Ceiling": [0.75] * 3, "BackWall": [0.75] * 3, "LeftWall": [0.63, 0.065, 0.05],
+              "RightWall": [0.14, 0.45, 0.091], "Lamp": [0.0] * 3, "TallBox": [0.72] * 3, "ShortBox": [0.72] * 3}
+    g = Gltf()
+    g.d["extensionsUsed"] = ["KHR_materials_specular", "KHR_materials_emissive_strength"]
+    for name, tris in groups.items():
+        ext = {"KHR_materials_specular": {"specularFactor": 0.0}}
+        mat = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": colors[name] + [1], "metallicFactor": 0.0,
+                                                       "roughnessFactor": 1.0}, "extensions": ext}
+        if name == "Lamp":
+            mat["emissiveFactor"] = [1.0, 12.0 / 17.0, 4.0 / 17.0]
+            ext["KHR_materials_emissive_strength"] = {"emissiveStrength": 17.0}
+        used = sorted({i for tri in tris for i in tri})
+        local = {v: k for k, v in enumerate(used)}
+        pos = [c for v in used for c in verts[v]]
+        mesh = g.mesh(pos, None, None, [local[i] for tri in tris for i in tri], g.material(**mat))
+        g.node(mesh=mesh, name=name)
+    g.node(camera=g.camera(type="perspective", perspective={"yfov": math.radians(45.0), "znear": 0.01}, name="Front"),
+           translation=[0.0, 0.0, 3.0], name="Front")
+    g.write("cornell_box.gltf")
+
+
+def glass():
+    """KHR_materials_transmission, _volume, _ior and _specular on spheres over a floor, under a
+    point light and a white-ish sky of directional light: from the left clear glass, rough glass
+    (roughness 0.3), green-tinted glass of ior 1.33, a Lambert sphere (specularFactor 0) and a
+    plastic with a blue specular colour."""
+    g = Gltf()
+    g.d["extensionsUsed"] = ["KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_ior",
+                             "KHR_materials_specular"]
+    floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.6, 0.6, 0.6, 1], "metallicFactor": 0.0,
+                                                            "roughnessFactor": 0.8})
+    g.node(mesh=ground(g, 20, floor), name="Ground")
+    wall = g.material(name="Wall", pbrMetallicRoughness={"baseColorFactor": [0.2, 0.3, 0.6, 1], "metallicFactor": 0.0,
+                                                          "roughnessFactor": 1.0})
+    stripe = g.material(name="Stripe", pbrMetallicRoughness={"baseColorFactor": [0.9, 0.8, 0.2, 1], "metallicFactor": 0.0,
+                                                              "roughnessFactor": 1.0})
+    g.node(mesh=quad(g, [(-6, 0, -1.5), (6, 0, -1.5), (6, 3, -1.5), (-6, 3, -1.5)], (0, 0, 1), wall, uv=False), name="Wall")
+    for k in range(-5, 6):  # stripes behind the spheres, to show what refraction does to them
+        x = 0.5 * k
+        g.node(mesh=quad(g, [(x - 0.08, 0, -1.49), (x + 0.08, 0, -1.49), (x + 0.08, 3, -1.49), (x - 0.08, 3, -1.49)],
+                         (0, 0, 1), stripe, uv=False), name=f"Stripe{k + 5}")
+    volume = {"thicknessFactor": 1.0}
+    looks = [("ClearGlass", [1, 1, 1], 0.0, {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                                               "KHR_materials_volume": volume}),
+             ("RoughGlass", [1, 1, 1], 0.3, {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                                               "KHR_materials_volume": volume}),
+             ("GreenWater", [0.5, 0.9, 0.6], 0.0, {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                                                     "KHR_materials_volume": volume, "KHR_materials_ior": {"ior": 1.33}}),
+             ("Lambert", [0.8, 0.8, 0.8], 0.5, {"KHR_materials_specular": {"specularFactor": 0.0}}),
+             ("BlueSheen", [0.8, 0.3, 0.1], 0.2, {"KHR_materials_specular": {"specularFactor": 1.0,
+                                                                             "specularColorFactor": [0.5, 1.0, 6.0]}})]
+    for k, (name, color, rough, ext) in enumerate(looks):
+        m = g.material(name=name, pbrMetallicRoughness={"baseColorFactor": color + [1], "metallicFactor": 0.0,
+                                                          "roughnessFactor": rough}, extensions=ext)
+        g.node(mesh=sphere(g, 0.45, m), translation=[-2.0 + k, 0.45, 0.0], name=name)
+    lamp = g.light(type="point", color=[1.0, 0.95, 0.9], intensity=6000.0, name="Lamp")
+    g.node(extensions={"KHR_lights_punctual": {"light": lamp}}, translation=[1.0, 3.0, 2.0], name="LampNode")
+    sun = g.light(type="directional", color=[0.8, 0.85, 1.0], intensity=1000.0, name="Sun")
+    g.node(extensions={"KHR_lights_punctual": {"light": sun}}, rotation=look_at_quaternion([0, 0, 0], [-1.0, -2.0, -1.5]),
+           name="SunNode")
+    camera_node(g, [0.0, 1.2, 6.0], [0.0, 0.5, 0.0], 30.0, aspect=2.0)
+    g.write("glass.gltf")
+
+
 if __name__ == "__main__":
     os.makedirs(HERE, exist_ok=True)
     spheres()
@@ -375,3 +458,5 @@ if __name__ == "__main__":
     alpha_modes()
     cameras()
     bin_and_image()
+    cornell_box()
+    glass()

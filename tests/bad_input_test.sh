@@ -281,6 +281,10 @@ mutate plane_point.gltf bad_roughness.gltf 'd["materials"][0]["pbrMetallicRoughn
 mutate plane_point.gltf bad_spot.gltf 'd["extensions"]["KHR_lights_punctual"]["lights"][0] = {"type": "spot", "spot": {"innerConeAngle": 0.6, "outerConeAngle": 0.5}}'
 mutate plane_point.gltf bad_light_type.gltf 'd["extensions"]["KHR_lights_punctual"]["lights"][0]["type"] = "area"'
 mutate plane_point.gltf bad_camera.gltf 'd["cameras"][0]["type"] = "fisheye"'
+mutate plane_point.gltf bad_transmission.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 2}}'
+mutate plane_point.gltf bad_specular_color.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_specular": {"specularColorFactor": [1, -1, 0]}}'
+mutate plane_point.gltf bad_specular.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_specular": {"specularFactor": "high"}}'
+mutate plane_point.gltf thin_walled.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 0.5}}'
 mutate plane_point.gltf lines.gltf 'd["meshes"][0]["primitives"][0]["mode"] = 1'
 mkdir -p lonely && cp "$gltf/bin_and_image.gltf" lonely/
 mkdir -p no_image && cp "$gltf/bin_and_image.gltf" "$gltf/bin_and_image.bin" no_image/
@@ -305,6 +309,10 @@ check gltf_bad_roughness 1 'material 0 "White": roughnessFactor 2 is outside [0,
 check gltf_bad_spot 1 'spot cone angles must satisfy 0 <= inner < outer <= pi/2' render bad_spot.gltf -o out/a.exr
 check gltf_bad_light_type 1 'type "area"; expected point, spot or directional' render bad_light_type.gltf -o out/a.exr
 check gltf_bad_camera 1 'bad_camera.gltf: Invalid camera type: "fisheye"' render bad_camera.gltf -o out/a.exr
+check gltf_bad_transmission 1 'material 0 "White" KHR_materials_transmission: transmissionFactor must be a number in [0, 1]' render bad_transmission.gltf -o out/a.exr
+check gltf_bad_specular_color 1 'KHR_materials_specular: specularColorFactor must hold numbers in [0, 1e+06]' render bad_specular_color.gltf -o out/a.exr
+check gltf_bad_specular 1 'KHR_materials_specular: specularFactor must be a number in [0, 1]' render bad_specular.gltf -o out/a.exr
+check gltf_thin_walled 0 'without KHR_materials_volume the surface is thin-walled' render thin_walled.gltf -spp 1 --res 8x8 -o out/a.exr
 check gltf_lines 0 '1 point or line primitives skipped' render lines.gltf -spp 1 --res 8x8 -o out/a.exr
 check gltf_missing_bin 1 'bin_and_image.bin' render lonely/bin_and_image.gltf -o out/a.exr
 check gltf_missing_image 1 'baseColorTexture: image 0 (no_image/checker.png) was not found or is empty' render no_image/bin_and_image.gltf -o out/a.exr
@@ -317,6 +325,7 @@ check gltf_folder 1 'folder.gltf: not a regular file' render folder.gltf -o out/
 check gltf_missing 1 'nowhere.glb: cannot open: no such file' render nowhere.glb -o out/a.exr
 
 # The sky (--sky): each bad value is a usage error naming the option, nothing written.
+check light_choice 2 'option --light-choice: expected auto, power or tree, got "bvh"' render m.obj --light-choice bvh -o out/a.exr
 check sky_option_alone 2 '--turbidity needs --sky' render m.obj --turbidity 4 -o out/a.exr
 check sky_and_env 2 '--sky and --env both set the environment' render m.obj --sky --env square_env.exr -o out/a.exr
 check sky_sun_twice 2 '--sun-dir and --sun-elevation/--sun-azimuth both place the sun' render m.obj --sky --sun-dir 0,1,0 --sun-elevation 30 -o out/a.exr

@@ -20,8 +20,8 @@ namespace pt {
 namespace {
 
 constexpr const char* kSupportedExtensions[] = {
-    "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_lights_punctual", "KHR_mesh_quantization",
-    "KHR_texture_transform",
+    "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular", "KHR_materials_transmission",
+    "KHR_materials_volume", "KHR_lights_punctual", "KHR_mesh_quantization", "KHR_texture_transform",
 };
 
 // Lumens per watt: glTF lights are photometric (candela, lux), pt's radiometric. Blender's glTF
@@ -71,6 +71,33 @@ glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& what) {
 
 Spectrum colorOf(const std::vector<double>& v, Spectrum fallback) {
     return v.size() >= 3 ? Spectrum(float(v[0]), float(v[1]), float(v[2])) : fallback;
+}
+
+// A number of an extension's object, checked against [lo, hi]; `fallback` where it is absent.
+float extensionNumber(const tinygltf::Value& object, const char* key, float fallback, float lo, float hi,
+                      const std::string& what) {
+    if (!object.Has(key)) return fallback;
+    const tinygltf::Value& v = object.Get(key);
+    float x = v.IsNumber() ? float(v.GetNumberAsDouble()) : std::nanf("");
+    if (!(x >= lo && x <= hi))
+        throw LoadError(what + ": " + key + " must be a number in [" + shortNumber(lo) + ", " + shortNumber(hi) + "]");
+    return x;
+}
+
+// A colour of an extension's object: three numbers in [0, hi].
+Spectrum extensionColor(const tinygltf::Value& object, const char* key, Spectrum fallback, float hi,
+                        const std::string& what) {
+    if (!object.Has(key)) return fallback;
+    const tinygltf::Value& v = object.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 3) throw LoadError(what + ": " + key + " must be an array of 3 numbers");
+    Spectrum c;
+    for (int i = 0; i < 3; ++i) {
+        const tinygltf::Value& x = v.Get(i);
+        c[i] = x.IsNumber() ? float(x.GetNumberAsDouble()) : std::nanf("");
+        if (!(c[i] >= 0.0f && c[i] <= hi))
+            throw LoadError(what + ": " + key + " must hold numbers in [0, " + shortNumber(hi) + "]");
+    }
+    return c;
 }
 
 class GltfReader {
@@ -352,6 +379,31 @@ private:
             m.eta = float(ior->second.Get("ior").GetNumberAsDouble());
             if (!(m.eta >= 1.0f && m.eta <= 10.0f)) throw LoadError(what + ": KHR_materials_ior ior " + shortNumber(m.eta) + " is outside [1, 10]");
         }
+        if (auto e = g.extensions.find("KHR_materials_specular"); e != g.extensions.end()) {
+            std::string ext = what + " KHR_materials_specular";
+            m.specular = extensionNumber(e->second, "specularFactor", 1.0f, 0.0f, 1.0f, ext);
+            m.ks = extensionColor(e->second, "specularColorFactor", Spectrum(1.0f), 1e6f, ext);
+            if (e->second.Has("specularTexture") || e->second.Has("specularColorTexture"))
+                warnOnce(warnedSpecularTexture_, ext + ": specularTexture and specularColorTexture are ignored (their factors apply)");
+        }
+        if (auto e = g.extensions.find("KHR_materials_transmission"); e != g.extensions.end()) {
+            std::string ext = what + " KHR_materials_transmission";
+            m.transparency = extensionNumber(e->second, "transmissionFactor", 0.0f, 0.0f, 1.0f, ext);
+            if (e->second.Has("transmissionTexture"))
+                warnOnce(warnedTransmissionTexture_, ext + ": transmissionTexture is ignored (transmissionFactor applies)");
+            auto volume = g.extensions.find("KHR_materials_volume");
+            if (m.transparency > 0.0f && volume == g.extensions.end())
+                warnOnce(warnedThinWalled_, ext + ": without KHR_materials_volume the surface is thin-walled; pt refracts "
+                                                  "through it with the ior (as Blender's importer does)");
+        }
+        if (auto e = g.extensions.find("KHR_materials_volume"); e != g.extensions.end()) {
+            std::string ext = what + " KHR_materials_volume";
+            extensionNumber(e->second, "thicknessFactor", 0.0f, 0.0f, 1e30f, ext);
+            float distance = extensionNumber(e->second, "attenuationDistance", kInf, 0.0f, kInf, ext);
+            extensionColor(e->second, "attenuationColor", Spectrum(1.0f), 1.0f, ext);
+            if (distance < kInf)
+                warnOnce(warnedAttenuation_, ext + ": attenuation (absorption inside the volume) is ignored; the volume is clear");
+        }
         if (pbr.baseColorTexture.index >= 0)
             m.kdMap = textureMap(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions,
                                  true, what + " baseColorTexture");
@@ -485,6 +537,12 @@ private:
     int constant_ = -1;
     size_t skippedPrimitives_ = 0;
     bool warnedColor_ = false, warnedMirror_ = false, warnedTexCoord_ = false;
+    bool warnedSpecularTexture_ = false, warnedTransmissionTexture_ = false, warnedThinWalled_ = false,
+         warnedAttenuation_ = false;
+    void warnOnce(bool& warned, const std::string& message) {
+        if (!warned) warnings_.add(message);
+        warned = true;
+    }
     bool anyNormals_ = false, anyUvs_ = false;
 };
 
