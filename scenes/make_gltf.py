@@ -366,6 +366,60 @@ def bin_and_image():
     g.write("bin_and_image.gltf", external=True)
 
 
+def vertex_colors():
+    """Two unit quads side by side under the default white environment, Lambert (specularFactor
+    0) so that each point's radiance is its base colour. Left: COLOR_0 as normalized unsigned
+    bytes (VEC4) red, green, blue and white at the corners, from the bottom left
+    counter-clockwise. Right: a 2 x 2 texture (red, green / blue, white, top row first) read
+    through TEXCOORD_1, with TEXCOORD_0 all zeros (a loader that reads set 0 sees one texel)."""
+    g = Gltf()
+    g.d["extensionsUsed"] = ["KHR_materials_specular"]
+    lambert = {"KHR_materials_specular": {"specularFactor": 0.0}}
+    plain = g.material(name="VertexColored", pbrMetallicRoughness={"baseColorFactor": [1, 1, 1, 1], "metallicFactor": 0.0},
+                       extensions=lambert)
+    pos = [-1.1, -0.5, 0, -0.1, -0.5, 0, -0.1, 0.5, 0, -1.1, 0.5, 0]
+    colors = bytes([255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255])
+    col = g.view(colors)
+    g.d["accessors"].append({"bufferView": col, "componentType": 5121, "normalized": True, "count": 4, "type": "VEC4"})
+    color_accessor = len(g.d["accessors"]) - 1
+    prim = {"attributes": {"POSITION": g.accessor(pos, "VEC3", 3), "COLOR_0": color_accessor},
+            "indices": g.accessor([0, 1, 2, 0, 2, 3], "SCALAR", 1), "material": plain}
+    g.d["meshes"].append({"primitives": [prim]})
+    g.node(mesh=len(g.d["meshes"]) - 1, name="Colored")
+    texels = [(255, 0, 0), (0, 255, 0), (0, 0, 255), (255, 255, 255)]
+    tex = g.image(png(2, 2, 3, lambda x, y: texels[2 * y + x]), sampler=0)
+    g.d["samplers"] = [{"magFilter": 9728, "minFilter": 9728, "wrapS": 33071, "wrapT": 33071}]
+    textured = g.material(name="SecondSet", pbrMetallicRoughness={"baseColorTexture": {"index": tex, "texCoord": 1},
+                                                                  "metallicFactor": 0.0}, extensions=lambert)
+    pos = [0.1, -0.5, 0, 1.1, -0.5, 0, 1.1, 0.5, 0, 0.1, 0.5, 0]
+    prim = {"attributes": {"POSITION": g.accessor(pos, "VEC3", 3), "TEXCOORD_0": g.accessor([0.0] * 8, "VEC2", 2),
+                           "TEXCOORD_1": g.accessor([0, 1, 1, 1, 1, 0, 0, 0], "VEC2", 2)},
+            "indices": g.accessor([0, 1, 2, 0, 2, 3], "SCALAR", 1), "material": textured}
+    g.d["meshes"].append({"primitives": [prim]})
+    g.node(mesh=len(g.d["meshes"]) - 1, name="SecondSet")
+    c = g.camera(type="orthographic", orthographic={"xmag": 1.2, "ymag": 0.6, "znear": 0.01, "zfar": 100}, name="Front")
+    g.node(camera=c, translation=[0.0, 0.0, 2.0], name="Front")
+    g.write("vertex_colors.gltf")
+
+
+def tangents():
+    """A normal-mapped quad whose TANGENT attribute (0, 1, 0, -1) is not what the uvs would give,
+    under a node turned 90 degrees about +z: pt must use the file's tangent, turned, (-1, 0, 0)."""
+    g = Gltf()
+    normal = g.image(png(1, 1, 3, lambda x, y: (128, 128, 255)))
+    m = g.material(name="Mapped", pbrMetallicRoughness={"metallicFactor": 0.0}, normalTexture={"index": normal})
+    pos = [-0.5, -0.5, 0, 0.5, -0.5, 0, 0.5, 0.5, 0, -0.5, 0.5, 0]
+    prim = {"attributes": {"POSITION": g.accessor(pos, "VEC3", 3), "NORMAL": g.accessor([0, 0, 1] * 4, "VEC3", 3),
+                           "TEXCOORD_0": g.accessor([0, 1, 1, 1, 1, 0, 0, 0], "VEC2", 2)},
+            "indices": g.accessor([0, 1, 2, 0, 2, 3], "SCALAR", 1), "material": m}
+    data = struct.pack("<16f", *([0.0, 1.0, 0.0, -1.0] * 4))
+    g.d["accessors"].append({"bufferView": g.view(data), "componentType": FLOAT, "count": 4, "type": "VEC4"})
+    prim["attributes"]["TANGENT"] = len(g.d["accessors"]) - 1
+    g.d["meshes"].append({"primitives": [prim]})
+    g.node(mesh=len(g.d["meshes"]) - 1, rotation=[0.0, 0.0, math.sin(math.pi / 4), math.cos(math.pi / 4)], name="Turned")
+    g.write("tangents.gltf")
+
+
 def cornell_box():
     """scenes/cornell_box.obj as glTF: the same triangles (read from the OBJ, quads split as pt
     splits them), Lambert walls through KHR_materials_specular's specularFactor 0, the lamp's Ke
@@ -458,5 +512,7 @@ if __name__ == "__main__":
     alpha_modes()
     cameras()
     bin_and_image()
+    vertex_colors()
+    tangents()
     cornell_box()
     glass()

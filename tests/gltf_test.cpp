@@ -3,6 +3,7 @@
 // default lighting, and the Khronos sample models loading and rendering without NaN.
 #include "accel/accel.h"
 #include "gltf/gltf_loader.h"
+#include "render/vertex_tangents.h"
 #include "scene/scene_loader.h"
 #include "tests/gltf_brdf_reference.h"
 #include "tests/test_scenes.h"
@@ -262,6 +263,56 @@ TEST(Gltf, TransmissionInAFurnace) {
     RegionStats centre = regionStats(tinted, 7, 7, 9, 9);
     EXPECT_LT(centre.mean.x, 0.5f * centre.mean.y) << "red passes the glass tinted twice";
     EXPECT_NEAR(centre.mean.y, 1.0f, 0.02f);
+}
+
+} // namespace
+} // namespace pt::test
+
+namespace pt::test {
+namespace {
+
+// COLOR_0 multiplies the base colour, interpolated across the triangle; a material whose texture
+// reads TEXCOORD_1 gets that set (TEXCOORD_0 is all zeros in the file, one texel everywhere).
+// Lambert surfaces under the white environment show their base colour as radiance.
+TEST(Gltf, VertexColorsAndTheSecondUvSet) {
+    Scene scene = load(kGltf + "vertex_colors.gltf");
+    ASSERT_EQ(scene.vertexColors.size(), scene.positions.size());
+    RenderSettings s;
+    Rendered r = render(scene, 48, 24, 64, s);
+    EXPECT_EQ(r.rays.discarded, 0u); // interpolated colours must not dip below 0 at edges
+    auto expectColor = [&](int x, int y, Spectrum want, const char* what) {
+        Spectrum got = regionStats(r, x, y, x + 2, y + 2).mean;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(got[c], want[c], 0.25f) << what << " channel " << c;
+    };
+    expectColor(3, 19, Spectrum(1, 0, 0), "bottom left: red");
+    expectColor(19, 19, Spectrum(0, 1, 0), "bottom right: green");
+    expectColor(19, 3, Spectrum(0, 0, 1), "top right: blue");
+    expectColor(3, 3, Spectrum(1, 1, 1), "top left: white");
+    // The texture's quadrants, each one texel (blurred a little by the footprint's filter).
+    expectColor(30, 6, Spectrum(1, 0, 0), "TEXCOORD_1 top left");
+    expectColor(40, 6, Spectrum(0, 1, 0), "TEXCOORD_1 top right");
+    expectColor(30, 16, Spectrum(0, 0, 1), "TEXCOORD_1 bottom left");
+    expectColor(40, 16, Spectrum(1, 1, 1), "TEXCOORD_1 bottom right");
+}
+
+} // namespace
+} // namespace pt::test
+
+namespace pt::test {
+namespace {
+
+// A TANGENT attribute replaces the generated tangent, turned with its node (the file's
+// (0, 1, 0) under a quarter turn about +z is (-1, 0, 0)), with its handedness w.
+TEST(Gltf, FileTangentsAreUsed) {
+    Scene scene = load(kGltf + "tangents.gltf");
+    std::vector<CornerTangent> t = buildCornerTangents(scene);
+    ASSERT_EQ(t.size(), 3 * scene.triangleCount());
+    for (const CornerTangent& c : t) {
+        EXPECT_NEAR(c.tangent.x, -1.0f, 1e-5f);
+        EXPECT_NEAR(c.tangent.y, 0.0f, 1e-5f);
+        EXPECT_EQ(c.sign, -1.0f);
+    }
 }
 
 } // namespace

@@ -108,6 +108,7 @@ public:
 
     void read() {
         materialOf_.assign(model_.materials.size(), ~0u);
+        uvSet_.assign(model_.materials.size(), 0);
         if (model_.scenes.empty()) {
             // No scene: every root node, as viewers do.
             std::vector<char> child(model_.nodes.size(), 0);
@@ -185,15 +186,28 @@ private:
         // KHR_mesh_quantization allows integer positions, normals and texture coordinates.
         std::vector<float> p = gltf::readFloats(model_, pos, 3, {F, B, UB, S, US}, what + " POSITION");
         size_t n = p.size() / 3;
-        std::vector<float> normals, uvs;
+        std::vector<float> normals, uvs, colors, tangents;
         if (int a = attribute(prim, "NORMAL"); a >= 0) normals = gltf::readFloats(model_, a, 3, {F, B, S}, what + " NORMAL");
-        if (int a = attribute(prim, "TEXCOORD_0"); a >= 0) uvs = gltf::readFloats(model_, a, 2, {F, B, UB, S, US}, what + " TEXCOORD_0");
-        if ((!normals.empty() && normals.size() != p.size()) || (!uvs.empty() && uvs.size() / 2 != n))
-            throw LoadError(what + ": its attributes have different counts (POSITION has " + std::to_string(n) + ")");
-        if (attribute(prim, "COLOR_0") >= 0 && !warnedColor_) {
-            warnings_.add(what + ": COLOR_0 is ignored (vertex colours are not supported)");
-            warnedColor_ = true;
+        if (int a = attribute(prim, "TANGENT"); a >= 0) tangents = gltf::readFloats(model_, a, 4, {F, B, S}, what + " TANGENT");
+        // Texture coordinates: the set the material's textures read (TEXCOORD_0 or _1).
+        int colorAccessor = attribute(prim, "COLOR_0");
+        uint32_t material = materialFor(prim.material, what, colorAccessor >= 0);
+        const std::string uvName = "TEXCOORD_" + std::to_string(uvSetOf(prim.material));
+        if (int a = attribute(prim, uvName.c_str()); a >= 0) uvs = gltf::readFloats(model_, a, 2, {F, B, UB, S, US}, what + " " + uvName);
+        if (colorAccessor >= 0) {
+            // VEC3 or VEC4 (its alpha is not used); float or normalized unsigned integers.
+            bool rgba = size_t(colorAccessor) < model_.accessors.size() &&
+                        model_.accessors[size_t(colorAccessor)].type == TINYGLTF_TYPE_VEC4;
+            colors = gltf::readFloats(model_, colorAccessor, rgba ? 4 : 3, {F, UB, US}, what + " COLOR_0");
+            if (rgba) {
+                size_t count = colors.size() / 4;
+                for (size_t i = 0; i < count; ++i) std::copy_n(&colors[4 * i], 3, &colors[3 * i]);
+                colors.resize(3 * count);
+            }
         }
+        if ((!normals.empty() && normals.size() != p.size()) || (!uvs.empty() && uvs.size() / 2 != n) ||
+            (!colors.empty() && colors.size() != p.size()) || (!tangents.empty() && tangents.size() != 4 * n))
+            throw LoadError(what + ": its attributes have different counts (POSITION has " + std::to_string(n) + ")");
 
         std::vector<uint32_t> index;
         if (prim.indices >= 0) index = gltf::readIndices(model_, prim.indices, n, what + " indices");
@@ -243,7 +257,27 @@ private:
             if (!anyUvs_) scene_.triUvs.assign(scene_.triPositions.size(), glm::ivec3(-1));
             anyUvs_ = true;
         }
-        uint32_t material = materialFor(prim.material, what);
+        if (!tangents.empty() || !scene_.vertexTangents.empty()) {
+            // Tangents per position, once any primitive has them (w = 0, none, elsewhere): along
+            // the surface, so by the linear part; a mirroring transform flips the handedness.
+            scene_.vertexTangents.resize(base, glm::vec4(0.0f));
+            for (size_t i = 0; i < n; ++i) {
+                if (tangents.empty()) {
+                    scene_.vertexTangents.emplace_back(0.0f);
+                    continue;
+                }
+                glm::dvec3 t = linear * glm::dvec3(tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2]);
+                float w = tangents[4 * i + 3] < 0.0f ? -1.0f : 1.0f;
+                Vec3 unit = safeNormalize(Vec3(float(t.x), float(t.y), float(t.z)));
+                scene_.vertexTangents.emplace_back(unit, unit == Vec3(0.0f) ? 0.0f : (mirrored ? -w : w));
+            }
+        }
+        if (!colors.empty() || !scene_.vertexColors.empty()) {
+            // Colours per position, once any primitive has them (white elsewhere).
+            scene_.vertexColors.resize(base, Spectrum(1.0f));
+            for (size_t i = 0; i < n; ++i)
+                scene_.vertexColors.push_back(colors.empty() ? Spectrum(1.0f) : Spectrum(colors[3 * i], colors[3 * i + 1], colors[3 * i + 2]));
+        }
         for (glm::uvec3 t : tris) {
             if (mirrored) std::swap(t.y, t.z);
             scene_.triPositions.push_back(t + base);
@@ -314,10 +348,16 @@ private:
                 warnings_.add(what + ": KHR_texture_transform rotation is ignored (offset and scale are applied)");
             if (v.Has("texCoord")) texCoord = v.Get("texCoord").GetNumberAsInt();
         }
-        if (texCoord != 0 && !warnedTexCoord_) {
-            warnings_.add(what + ": TEXCOORD_" + std::to_string(texCoord) + " is not supported; TEXCOORD_0 is used");
-            warnedTexCoord_ = true;
+        // One set of texture coordinates per material: the first texture's (0 or 1) serves all.
+        if (texCoord < 0 || texCoord > 1) {
+            warnOnce(warnedTexCoord_, what + ": TEXCOORD_" + std::to_string(texCoord) + " is not supported (0 and 1 are); "
+                                      "TEXCOORD_0 is used");
+            texCoord = 0;
         }
+        if (materialUvSet_ < 0) materialUvSet_ = texCoord;
+        else if (texCoord != materialUvSet_)
+            warnOnce(warnedMixedSets_, what + ": reads TEXCOORD_" + std::to_string(texCoord) + " where the material's other "
+                                       "textures read TEXCOORD_" + std::to_string(materialUvSet_) + "; those are used");
         if (!std::isfinite(offset.x) || !std::isfinite(offset.y) || !std::isfinite(scale.x) || !std::isfinite(scale.y))
             throw LoadError(what + ": KHR_texture_transform has a value that is not finite");
         map.scale = scale;
@@ -338,7 +378,24 @@ private:
         return constant_;
     }
 
-    uint32_t materialFor(int index, const std::string& where) {
+    // The scene's material for glTF material `index` (-1: the default), a copy that multiplies
+    // its base colour by COLOR_0 where the primitive has vertex colours.
+    uint32_t materialFor(int index, const std::string& where, bool vertexColors) {
+        uint32_t plain = plainMaterialFor(index, where);
+        if (!vertexColors) return plain;
+        auto [it, isNew] = withColors_.try_emplace(plain, uint32_t(scene_.materials.size()));
+        if (isNew) {
+            Material m = scene_.materials[plain];
+            m.vertexColors = true;
+            scene_.materials.push_back(m);
+        }
+        return it->second;
+    }
+
+    // The texture coordinate set (0 or 1) that material `index`'s textures read.
+    int uvSetOf(int index) const { return index >= 0 && size_t(index) < uvSet_.size() ? uvSet_[size_t(index)] : 0; }
+
+    uint32_t plainMaterialFor(int index, const std::string& where) {
         if (index < 0) {
             if (defaultMaterial_ == ~0u) {
                 // The specification's default material: white, metallic 1, roughness 1.
@@ -357,6 +414,7 @@ private:
         if (size_t(index) >= model_.materials.size())
             throw LoadError(where + ": material " + std::to_string(index) + " does not exist");
         if (materialOf_[size_t(index)] != ~0u) return materialOf_[size_t(index)];
+        materialUvSet_ = -1;
         const tinygltf::Material& g = model_.materials[size_t(index)];
         std::string what = path_ + ": material " + std::to_string(index) + (g.name.empty() ? "" : " \"" + g.name + "\"");
         const auto& pbr = g.pbrMetallicRoughness;
@@ -450,6 +508,7 @@ private:
         } else if (mode != "OPAQUE") {
             throw LoadError(what + ": alphaMode \"" + mode + "\"; expected OPAQUE, MASK or BLEND");
         }
+        uvSet_[size_t(index)] = std::max(0, materialUvSet_);
         materialOf_[size_t(index)] = uint32_t(scene_.materials.size());
         scene_.materials.push_back(m);
         return materialOf_[size_t(index)];
@@ -531,13 +590,16 @@ private:
     Scene& scene_;
     Warnings& warnings_;
     std::vector<uint32_t> materialOf_;
+    std::map<uint32_t, uint32_t> withColors_; // a material's copy for primitives with COLOR_0
+    std::vector<int> uvSet_;                   // per glTF material, the TEXCOORD set its textures read
+    int materialUvSet_ = -1;                   // while a material is read: its textures' set so far
     uint32_t defaultMaterial_ = ~0u;
     std::vector<char> visited_;
     std::map<std::pair<int, bool>, int> decoded_;
     int constant_ = -1;
     size_t skippedPrimitives_ = 0;
     bool warnedColor_ = false, warnedMirror_ = false, warnedTexCoord_ = false;
-    bool warnedSpecularTexture_ = false, warnedTransmissionTexture_ = false, warnedThinWalled_ = false,
+    bool warnedMixedSets_ = false, warnedSpecularTexture_ = false, warnedTransmissionTexture_ = false, warnedThinWalled_ = false,
          warnedAttenuation_ = false;
     void warnOnce(bool& warned, const std::string& message) {
         if (!warned) warnings_.add(message);

@@ -67,6 +67,7 @@ inline ShadingPoint evaluateMaterial(const Material& m, const TextureCache& text
         if (m.isTextured()) {
             // glTF's textures multiply its factors: roughness = factor * G, so alpha = factor^2 G^2.
             if (m.kdMap.used()) base *= textures.color(m.kdMap, sp.uv, sp.footprint);
+            if (m.vertexColors) base *= sp.color;
             if (m.roughnessMap.used()) alpha *= sqr(std::clamp(textures.scalar(m.roughnessMap, sp.uv, sp.footprint), 0.0f, 1.0f));
             if (m.metallicMap.used()) metallic *= std::clamp(textures.scalar(m.metallicMap, sp.uv, sp.footprint), 0.0f, 1.0f);
         }

@@ -22,6 +22,7 @@ struct SurfacePoint {
     Footprint footprint;         // what a lookup filters over (a ray cone's ellipse, in uv)
     Vec3 tangent{0.0f};          // interpolated vertex tangent (normal maps), not renormalised
     float bitangentSign = 1.0f;
+    Spectrum color{1.0f};        // interpolated vertex colour (glTF COLOR_0)
 };
 
 inline SurfacePoint makeSurfacePoint(const ShadingTriangle& tri, const Hit& hit) {
@@ -53,6 +54,12 @@ inline SurfacePoint makeSurfacePoint(const ShadingTriangle& tri, const Hit& hit)
 inline void addTextureCoordinates(SurfacePoint& sp, const ShadingTriangle& tri, const Scene& scene,
                                   const std::vector<CornerTangent>& tangents, const Hit& hit, const Vec3& dir,
                                   float coneWidth) {
+    if (!scene.vertexColors.empty()) {
+        const glm::uvec3& t = scene.triPositions[hit.prim];
+        // Clamped: at an edge u + v can pass 1 by a rounding, and a colour of -1e-7 is a negative sample.
+        sp.color = glm::max(Spectrum(0.0f), (1.0f - hit.u - hit.v) * scene.vertexColors[t.x] +
+                                                hit.u * scene.vertexColors[t.y] + hit.v * scene.vertexColors[t.z]);
+    }
     if (scene.triUvs.empty() || scene.triUvs[hit.prim].x < 0) return;
     const glm::ivec3& ti = scene.triUvs[hit.prim];
     const Vec2 uv0 = scene.uvs[ti.x];

@@ -31,7 +31,7 @@ Vec3 projectOut(const Vec3& v, const Vec3& n) { return v - n * glm::dot(n, v); }
 std::vector<CornerTangent> buildCornerTangents(const Scene& scene) {
     bool needed = false;
     for (const Material& m : scene.materials) needed |= m.normalMap.used();
-    if (!needed || scene.triUvs.empty()) return {};
+    if (!needed || scene.triUvs.empty()) return {}; // without uvs no map is read
 
     const size_t count = scene.triangleCount();
     std::vector<CornerTangent> corners(3 * count);
@@ -79,6 +79,16 @@ std::vector<CornerTangent> buildCornerTangents(const Scene& scene) {
             corners[c].tangent = safeNormalize(sum);
         }
     }
+    // Tangents the file gives (glTF's TANGENT) replace generated ones: the normal map was baked
+    // against them, with bitangent = w cross(n, t) as pt's sign has it.
+    if (!scene.vertexTangents.empty())
+        for (size_t t = 0; t < count; ++t) {
+            if (!scene.materials[scene.triMaterial[t]].normalMap.used()) continue;
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec4& given = scene.vertexTangents[scene.triPositions[t][k]];
+                if (given.w != 0.0f) corners[3 * t + k] = CornerTangent{Vec3(given), given.w};
+            }
+        }
     return corners;
 }
 

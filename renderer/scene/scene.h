@@ -87,6 +87,7 @@ struct Material {
     float alpha = 1.0f;           // coverage multiplier of map_d (d, where map_d is given)
     float alphaCutoff = -1.0f;    // >= 0: coverage is 1 at or above it and 0 below (glTF MASK)
     float specular = 1.0f;        // glTF KHR_materials_specular's specularFactor
+    bool vertexColors = false;    // glTF COLOR_0 multiplies kd (Scene::vertexColors)
     Spectrum emission{0.0f};      // emitted radiance, both sides (Ke, emittance)
 
     bool isEmissive() const { return !isBlack(emission); }
@@ -94,7 +95,7 @@ struct Material {
     bool perturbsNormal() const { return normalMap.used() || bumpMap.used(); }
     bool isTextured() const {
         return kdMap.used() || ksMap.used() || roughnessMap.used() || metallicMap.used() || perturbsNormal() ||
-               emissionMap.used();
+               emissionMap.used() || vertexColors;
     }
 };
 
@@ -128,6 +129,8 @@ struct Scene {
     std::vector<glm::uvec3> triPositions;
     std::vector<glm::ivec3> triNormals; // -1 where the face has no normals; empty if none has
     std::vector<glm::ivec3> triUvs;     // -1 where the face has no uvs; empty if none has
+    std::vector<glm::vec4> vertexTangents; // glTF TANGENT per position (xyz unit, w the bitangent's sign; 0: none); empty if none has
+    std::vector<Spectrum> vertexColors; // glTF COLOR_0, per position (white where a mesh has none); empty if none has
     std::vector<uint32_t> triMaterial;
 
     std::vector<Material> materials;
