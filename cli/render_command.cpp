@@ -57,7 +57,8 @@ options (default in brackets):
   --light-choice M       how next-event estimation picks an emitter: power, or tree
                          (a light tree weighing each by distance and orientation as seen
                          from the shading point; for many emitters); auto takes the
-                         tree with 2 or more lights and emissive triangles [auto]
+                         tree with 2 or more lights and emissive triangles, or with
+                         any beside an environment, sun or directional light [auto]
   --hemisphere M         Lambert sampling, cosine or uniform (a diagnostic) [cosine]
   --sampler S            sample values: sobol (Owen-scrambled Sobol points) or random
                          (independent) [sobol]

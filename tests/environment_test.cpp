@@ -145,7 +145,7 @@ TEST(EnvironmentLight, ChosenByPowerBesideASphereLight) {
     lamp.intensity = Spectrum(1.0f);
     s.lights.push_back(lamp);
     s.environment.map = mapFrom(16, 8, [](int, int) { return Spectrum(1.0f); });
-    LightSet lights(s);
+    LightSet lights(s, LightChoice::Power); // Auto would weigh the two at each point (light_tree_test.cpp)
     ASSERT_EQ(lights.size(), 2u);
     ASSERT_NE(lights.environmentEmitter(), ~0u);
     // Bounds [-1, 1] x [0, 1.1] x [-1, 1]: R = sqrt(2^2 + 1.1^2 + 2^2) / 2; a constant 1 integrates to 4 pi.

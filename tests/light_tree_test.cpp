@@ -52,6 +52,20 @@ Scene scatteredEmitters(int triangles) {
     return s;
 }
 
+// The same with distant lights beside the tree: a directional light and an environment map.
+Scene scatteredEmittersUnderTheSky(int triangles) {
+    Scene s = scatteredEmitters(triangles);
+    DirectionalLight sun;
+    sun.direction = glm::normalize(Vec3(1, 2, 0.5f));
+    sun.irradiance = Spectrum(3.0f);
+    s.directionalLights.push_back(sun);
+    auto map = std::make_shared<EnvironmentMap>();
+    map->width = 8, map->height = 4;
+    map->rgb.assign(8 * 4 * 3, 0.2f);
+    s.environment.map = map;
+    return s;
+}
+
 // Everything that can light p: for a triangle, some point on it seen from p at a non-zero
 // cosine on both ends; for spheres and points, anything (a spot: inside its outer cone).
 bool canLight(const Scene& s, const LightSet& lights, uint32_t e, const Vec3& p, const Vec3& n, Pcg32& rng) {
@@ -68,7 +82,8 @@ bool canLight(const Scene& s, const LightSet& lights, uint32_t e, const Vec3& p,
 // Over every emitter, the tree's probabilities at a point sum to one, and no emitter that can
 // light the point has probability 0 (that would be light lost: bias, not noise).
 TEST(LightTree, PmfSumsToOneAndMissesNoEmitter) {
-    Scene s = scatteredEmitters(300);
+  for (bool sky : {false, true}) {
+    Scene s = sky ? scatteredEmittersUnderTheSky(300) : scatteredEmitters(300);
     LightSet lights(s, LightChoice::Tree);
     ASSERT_TRUE(lights.usesTree());
     Pcg32 rng(3, 1);
@@ -86,11 +101,12 @@ TEST(LightTree, PmfSumsToOneAndMissesNoEmitter) {
         ++points;
     }
     EXPECT_EQ(zeroButLit, 0) << "emitters that can light a point but that the tree never picks there";
+  }
 }
 
 // What choose() draws follows pmf(), and each draw reports the pmf() of what it drew.
 TEST(LightTree, ChoicesFollowPmf) {
-    Scene s = scatteredEmitters(60);
+    Scene s = scatteredEmittersUnderTheSky(60);
     LightSet lights(s, LightChoice::Tree);
     Pcg32 rng(11, 1);
     for (int trial = 0; trial < 4; ++trial) {
@@ -193,6 +209,10 @@ TEST(LightTree, ImagesAgreeWithBsdfSamplingAndPowerChoice) {
     spot.center = Vec3(-0.5f, 0.9f, 0.0f), spot.intensity = Spectrum(4.0f);
     spot.spotDirection = Vec3(0, -1, 0), spot.cosInner = 0.95f, spot.cosOuter = 0.85f;
     s.lights = {point, spot};
+    DirectionalLight sun; // a distant light beside them: the choice between it and the tree
+    sun.direction = glm::normalize(Vec3(0.3f, 1.0f, 0.6f));
+    sun.irradiance = Spectrum(0.8f, 0.7f, 0.5f);
+    s.directionalLights.push_back(sun);
     expectSameImage(render(s, 32, 24, 1024, tree), render(s, 32, 24, 4096, power), "tree against power");
 }
 

@@ -128,18 +128,28 @@ LightSet::LightSet(const Scene& scene, LightChoice choice) : scene_(scene) {
     }
     distribution_ = Distribution1D(power);
 
-    bool tree = choice == LightChoice::Tree ? boundedCount_ >= 1 : choice == LightChoice::Auto && boundedCount_ >= 2;
+    // The tree serves many bounded emitters, or bounded ones beside distant ones: choosing
+    // between a spot and the sun by power alone weighs the sun by the whole scene's disk.
+    size_t distantCount = emitters_.size() - boundedCount_;
+    bool tree = choice == LightChoice::Tree ? boundedCount_ >= 1
+                                            : choice == LightChoice::Auto && boundedCount_ >= 1 &&
+                                                  (boundedCount_ >= 2 || distantCount >= 1);
     if (tree && emitters_.size() > 1) {
         std::vector<LightBounds> bounds;
-        double boundedPower = 0.0;
-        for (uint32_t i = 0; i < boundedCount_; ++i) {
-            bounds.push_back(boundsOf(emitters_[i], power[i]));
-            boundedPower += power[i];
-        }
+        for (uint32_t i = 0; i < boundedCount_; ++i) bounds.push_back(boundsOf(emitters_[i], power[i]));
         tree_ = LightTree(bounds);
-        std::vector<double> top{boundedPower};
-        top.insert(top.end(), power.begin() + boundedCount_, power.end());
-        distantOrTree_ = Distribution1D(top);
+        for (size_t i = boundedCount_; i < emitters_.size(); ++i) {
+            const Emitter& e = emitters_[i];
+            DistantEstimate d;
+            if (e.kind == Emitter::Kind::Environment) {
+                d.irradiance = float(0.25 * environment_->radiantIntensityIntegral()); // pi L for a uniform L
+            } else {
+                d.direction = e.center;
+                double radiance = average(e.radiance);
+                d.irradiance = float(e.kind == Emitter::Kind::Sun ? radiance * scene.environment.sun->solidAngle() : radiance);
+            }
+            distant_.push_back(d);
+        }
     }
 }
 
@@ -167,22 +177,56 @@ LightBounds LightSet::boundsOf(const Emitter& e, double power) const {
     return b;
 }
 
+// Each item's weight at a point: the tree's is its root's importance, which for a point light of
+// intensity I is 4 pi I / d^2 (4 pi times its irradiance); a distant light's is its irradiance
+// on a surface facing it, times the receiver's cosine.
+float LightSet::treeWeight(const Vec3& p, const Vec3& n) const { return tree_.rootImportance(p, n) * (0.25f * kInvPi); }
+
+float LightSet::distantWeight(size_t j, const Vec3& n) const {
+    const DistantEstimate& d = distant_[j];
+    if (d.direction == Vec3(0.0f) || n == Vec3(0.0f)) return d.irradiance;
+    return d.irradiance * std::abs(glm::dot(d.direction, n));
+}
+
+// Between the tree (item 0) and the distant emitters: half of the probability by the weights,
+// half evenly, so that an estimate that is off (the weights are rough) can cost at most half of
+// the samples and never starve a light. A tree that can light nothing at p gets nothing.
 uint32_t LightSet::chooseFromTree(float u, const Vec3& p, const Vec3& n, float& pmf) const {
-    float pTop, uTree;
-    size_t k = distantOrTree_.sample(u, &pTop, &uTree);
-    if (k > 0) {
-        pmf = pTop;
-        return boundedCount_ + uint32_t(k) - 1;
+    float wTree = treeWeight(p, n), sum = wTree;
+    for (size_t j = 0; j < distant_.size(); ++j) sum += distantWeight(j, n);
+    float items = float(distant_.size() + (wTree > 0.0f ? 1 : 0));
+    auto probability = [&](float w) { return sum > 0.0f ? 0.5f * w / sum + 0.5f / items : 1.0f / items; };
+    float cdf = 0.0f;
+    if (wTree > 0.0f) {
+        float pTree = probability(wTree);
+        if (u < pTree || distant_.empty()) {
+            float pLeaf;
+            uint32_t e = tree_.sample(p, n, std::min(u / pTree, 0x1.fffffep-1f), pLeaf);
+            pmf = pTree * pLeaf;
+            return e;
+        }
+        cdf = pTree;
     }
-    float pTree;
-    uint32_t e = tree_.sample(p, n, uTree, pTree);
-    pmf = pTop * pTree;
-    return e;
+    for (size_t j = 0; j < distant_.size(); ++j) {
+        float pj = probability(distantWeight(j, n));
+        cdf += pj;
+        if (u < cdf || j + 1 == distant_.size()) {
+            pmf = pj;
+            return boundedCount_ + uint32_t(j);
+        }
+    }
+    pmf = 0.0f;
+    return ~0u;
 }
 
 float LightSet::pmfFromTree(size_t i, const Vec3& p, const Vec3& n) const {
-    if (i >= boundedCount_) return distantOrTree_.pmf(i - boundedCount_ + 1);
-    return distantOrTree_.pmf(0) * tree_.pmf(p, n, uint32_t(i));
+    float wTree = treeWeight(p, n), sum = wTree;
+    for (size_t j = 0; j < distant_.size(); ++j) sum += distantWeight(j, n);
+    float items = float(distant_.size() + (wTree > 0.0f ? 1 : 0));
+    auto probability = [&](float w) { return sum > 0.0f ? 0.5f * w / sum + 0.5f / items : 1.0f / items; };
+    if (i >= boundedCount_) return probability(distantWeight(i - boundedCount_, n));
+    if (!(wTree > 0.0f)) return 0.0f;
+    return probability(wTree) * tree_.pmf(p, n, uint32_t(i));
 }
 
 LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {

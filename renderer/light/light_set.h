@@ -88,10 +88,17 @@ private:
     const Scene& scene_;
     std::vector<Emitter> emitters_;
     Distribution1D distribution_; // all emitters by power
-    // With a tree: the bounded emitters (indices below boundedCount_) are its leaves, and
-    // `distantOrTree_` chooses between the tree (item 0) and each distant emitter by power.
+    // With a tree: the bounded emitters (indices below boundedCount_) are its leaves, and the
+    // distant ones (from boundedCount_ on) compete with the tree as a whole at each point, by
+    // an estimate of the irradiance each sends there (see chooseFromTree).
+    struct DistantEstimate {
+        Vec3 direction{0.0f}; // towards the light, for the receiver's cosine; 0: none (environment)
+        float irradiance = 0.0f;
+    };
+    float distantWeight(size_t j, const Vec3& n) const;
+    float treeWeight(const Vec3& p, const Vec3& n) const;
     LightTree tree_;
-    Distribution1D distantOrTree_;
+    std::vector<DistantEstimate> distant_;
     uint32_t boundedCount_ = 0;
     std::vector<uint32_t> lightEmitter_;
     std::vector<uint32_t> triangleEmitter_; // empty unless the scene has emissive triangles

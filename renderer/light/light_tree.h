@@ -14,7 +14,8 @@
 namespace pt {
 
 // How a LightSet picks an emitter for next-event estimation: by power alone, or by the tree's
-// estimate at the shading point. Auto takes the tree when there are 2 or more bounded emitters.
+// estimate at the shading point. Auto takes the tree when there are 2 or more bounded emitters,
+// or bounded emitters beside distant ones (environment, sun, directional lights).
 enum class LightChoice : uint8_t { Auto, Power, Tree };
 
 // What a node knows of the emitters below it: where they are, where their surfaces face, and
@@ -56,6 +57,8 @@ public:
     explicit LightTree(const std::vector<LightBounds>& emitters);
 
     bool empty() const { return nodes_.empty(); }
+    // The whole tree's importance at p (0: no emitter of it can light p).
+    float rootImportance(const Vec3& p, const Vec3& n) const { return nodes_.empty() ? 0.0f : nodes_[0].bounds.importance(p, n); }
     // Picks an emitter for a shading point; ~0u when none can light it.
     uint32_t sample(const Vec3& p, const Vec3& n, float u, float& pmf) const;
     // The probability that sample() picks `emitter` at p.
