@@ -420,6 +420,25 @@ def tangents():
     g.write("tangents.gltf")
 
 
+def materials():
+    """The Cycles check's simple cases (tools/crosscheck/cycles_gltf.py): five spheres on a floor
+    under the default white environment (no lights), from the left a
+    rough white dielectric (roughness 1), red dielectric at roughness 0.3, blue at 0.6, gold
+    metal at 0.3 and silver metal at 0.6."""
+    g = Gltf()
+    floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0.0,
+                                                            "roughnessFactor": 1.0})
+    g.node(mesh=quad(g, [(-3, 0, 1.5), (3, 0, 1.5), (3, 0, -1.5), (-3, 0, -1.5)], (0, 1, 0), floor, uv=False), name="Floor")
+    looks = [("White", [0.8, 0.8, 0.8], 0.0, 1.0), ("Red", [0.8, 0.1, 0.1], 0.0, 0.3), ("Blue", [0.1, 0.2, 0.8], 0.0, 0.6),
+             ("Gold", [1.0, 0.78, 0.34], 1.0, 0.3), ("Silver", [0.9, 0.9, 0.9], 1.0, 0.6)]
+    for k, (name, color, metal, rough) in enumerate(looks):
+        m = g.material(name=name, pbrMetallicRoughness={"baseColorFactor": color + [1], "metallicFactor": metal,
+                                                          "roughnessFactor": rough})
+        g.node(mesh=sphere(g, 0.45, m), translation=[-2.2 + 1.1 * k, 0.45, 0.0], name=name)
+    camera_node(g, [0.0, 1.5, 4.5], [0.0, 0.35, 0.0], 24.0, aspect=2.5)
+    g.write("materials.gltf")
+
+
 def cornell_box():
     """scenes/cornell_box.obj as glTF: the same triangles (read from the OBJ, quads split as pt
     splits them), Lambert walls through KHR_materials_specular's specularFactor 0, the lamp's Ke
@@ -514,5 +533,6 @@ if __name__ == "__main__":
     bin_and_image()
     vertex_colors()
     tangents()
+    materials()
     cornell_box()
     glass()

@@ -1,0 +1,135 @@
+#!/usr/bin/env python3
+"""Renders a glTF 2.0 file with Blender's Cycles through Blender's own glTF importer (bpy from
+PyPI), the independent check of pt's glTF support (issue 13).
+
+Nothing of pt's reading of the file is reused: the importer builds the Principled BSDFs, the
+lights (its default unit conversion, 683 lm/W, which pt follows) and the cameras. Set here only
+what the file does not say, as pt does:
+- A file without lights gets pt's default environment, uniform white of radiance 1; a file with
+  lights a black one.
+- The camera is the file's when it has one (or --camera NAME); without one, pt's framing: the
+  bounds' bounding sphere seen from +z (glTF's; Blender's -y) with a vertical field of view of 45
+  degrees.
+- The Principled BSDF's multiple-scattering GGX is switched to single-scattering GGX, as in the
+  glTF BRDF; the rest of the Principled BSDF is not the glTF BRDF (its dielectric Fresnel and
+  layering differ), which is what the check measures first on simple cases.
+Cycles' biasing defaults are off, as in cycles_lab.py; each pass goes to its own EXR.
+
+    cycles_gltf.py FILE --out-dir DIR [--res WxH] [--spp N] [--passes P] [--camera NAME]
+"""
+import argparse
+import math
+import os
+import sys
+import time
+
+import bpy
+import mathutils
+
+sys.path.insert(0, os.path.dirname(__file__))
+from cycles_lab import look_at, new_scene  # noqa: E402
+from lab_scene import fail  # noqa: E402
+
+
+def unbiased_cycles(scene, max_depth):
+    c = scene.cycles
+    c.max_bounces = c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = max_depth - 1
+    c.transparent_max_bounces = max_depth
+    c.volume_bounces = 0
+    c.caustics_reflective = c.caustics_refractive = True
+    c.blur_glossy = 0.0
+    c.sample_clamp_direct = c.sample_clamp_indirect = 0.0
+    c.light_sampling_threshold = 0.0
+
+
+def frame_bounds(scene):
+    """pt's camera for a file without one (renderer/scene/scene_loader.cpp, frameScene)."""
+    bpy.context.view_layer.update()  # children's world matrices are stale until the scene is evaluated
+    lo = mathutils.Vector((math.inf,) * 3)
+    hi = mathutils.Vector((-math.inf,) * 3)
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    for obj in scene.objects:
+        if obj.type != "MESH":
+            continue
+        mesh = obj.evaluated_get(depsgraph).to_mesh()
+        for v in mesh.vertices:
+            p = obj.matrix_world @ v.co
+            lo = mathutils.Vector(map(min, lo, p))
+            hi = mathutils.Vector(map(max, hi, p))
+    center = (lo + hi) / 2
+    print(f"framing: bounds {tuple(lo)} to {tuple(hi)}", file=sys.stderr)
+    radius = max((hi - lo).length / 2, 1e-6)
+    distance = radius / math.sin(math.radians(22.5))
+    data = bpy.data.cameras.new("framing")
+    data.sensor_fit = "VERTICAL"
+    data.angle_y = math.radians(45.0)
+    # pt has no near plane; Blender's default of 0.1 would clip away a small model (this one of
+    # the Khronos models is 7 mm across).
+    data.clip_start = distance * 1e-4
+    data.clip_end = distance * 1e4
+    obj = bpy.data.objects.new("framing", data)
+    scene.collection.objects.link(obj)
+    look_at(obj, center + mathutils.Vector((0, -distance, 0)), center, (0, 0, 1))  # glTF +z is Blender -y
+    return obj
+
+
+def build(path, width, height, camera_name, max_depth):
+    scene = new_scene(width, height)
+    unbiased_cycles(scene, max_depth)
+    bpy.ops.import_scene.gltf(filepath=os.path.abspath(path))
+    scene = bpy.context.scene
+    for mat in bpy.data.materials:
+        for n in mat.node_tree.nodes if mat.node_tree else []:
+            if n.type == "BSDF_PRINCIPLED":
+                n.distribution = "GGX"
+    lights = [o for o in scene.objects if o.type == "LIGHT"]
+    world = bpy.data.worlds.new("pt-default")
+    if not world.node_tree:
+        world.use_nodes = True
+    bg = world.node_tree.nodes["Background"]
+    bg.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0) if not lights else (0.0, 0.0, 0.0, 1.0)
+    bg.inputs["Strength"].default_value = 1.0
+    scene.world = world
+    cameras = [o for o in scene.objects if o.type == "CAMERA"]
+    if camera_name:
+        match = [o for o in cameras if o.name == camera_name or o.data.name == camera_name]
+        scene.camera = match[0] if match else fail(f"no camera {camera_name!r}: {[o.name for o in cameras]}")
+    elif len(cameras) == 1:
+        scene.camera = cameras[0]
+    elif not cameras:
+        scene.camera = frame_bounds(scene)
+    else:
+        fail(f"the file has {len(cameras)} cameras; name one with --camera ({[o.name for o in cameras]})")
+    # The importer sets the render size from a camera's aspect ratio: the check's size wins.
+    scene.render.resolution_x, scene.render.resolution_y = width, height
+    scene.render.pixel_aspect_x = scene.render.pixel_aspect_y = 1.0
+    cam = scene.camera.data  # the importer keeps yfov as a vertical angle, as pt does
+    print(f"camera {scene.camera.name}: {cam.type}, sensor fit {cam.sensor_fit}, "
+          f"vertical angle {math.degrees(cam.angle_y):.3f} degrees", file=sys.stderr)
+    return scene
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("file")
+    ap.add_argument("--out-dir", required=True)
+    ap.add_argument("--camera", default="")
+    ap.add_argument("--res", default="128x128")
+    ap.add_argument("--spp", type=int, default=256, help="samples per pixel of each pass")
+    ap.add_argument("--passes", type=int, default=16)
+    ap.add_argument("--max-depth", type=int, default=16)
+    a = ap.parse_args()
+    width, height = (int(x) for x in a.res.lower().split("x"))
+    scene = build(a.file, width, height, a.camera, a.max_depth)
+    scene.cycles.samples = a.spp
+    os.makedirs(a.out_dir, exist_ok=True)
+    start = time.time()
+    for p in range(a.passes):
+        scene.cycles.seed = p + 1
+        scene.render.filepath = os.path.join(a.out_dir, f"pass{p:04d}.exr")
+        bpy.ops.render.render(write_still=True)
+        print(f"pass {p + 1}/{a.passes}  {time.time() - start:.0f} s", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
