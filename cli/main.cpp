@@ -13,10 +13,12 @@ static const char* kUsage = R"(pt )" PT_VERSION R"( - a headless path tracer on 
 usage: pt <command> [options]
 
 commands:
-  render SCENE [options]   render a scene (.obj with the lab's MTL) to .exr or .png
+  render SCENE [options]   render a scene (.obj with the lab's MTL, .gltf, .glb) to .exr or .png
                            (pt render --help lists its options)
   diff TEST REF [options]  compare two renders statistically; exit 0 same, 1 different
                            (pt diff --help lists its options)
+  merge PART... -o OUT     merge the parts of a split render (pt render --samples, --crop)
+                           into one image (pt merge --help lists its options)
 
 options:
   -h, --help               show this help
@@ -42,6 +44,7 @@ int main(int argc, char** argv) {
     try {
         if (!std::strcmp(cmd, "render")) return pt::cli::renderCommand(argc - 1, argv + 1);
         if (!std::strcmp(cmd, "diff")) return pt::cli::diffCommand(argc - 1, argv + 1);
+        if (!std::strcmp(cmd, "merge")) return pt::cli::mergeCommand(argc - 1, argv + 1);
     } catch (const std::bad_alloc&) { // each stage names what it allocates; this is the last resort
         std::fprintf(pt::cli::errorStream(), "pt: error: out of memory\n");
         return 1;

@@ -7,6 +7,8 @@
 #include "io/output_file.h"
 #include "image/image_io.h"
 #include "light/sky_environment.h"
+#include "render/film_image.h"
+#include "render/render_job.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 
@@ -85,6 +87,13 @@ options (default in brackets):
   --exposure EV          multiply the image by 2^EV (the variance layer by its square) [0]
   --clamp X              scale down any sample whose largest channel exceeds X: fewer
                          fireflies, but biased (light is lost); 0 is off [0]
+  --samples A:B          render only sample indices [A, B) of the job's -spp per pixel,
+                         with the random numbers they get in a whole render; the output
+                         is a part for pt merge (an .exr with the exact sums) [0:spp]
+  --crop X0,Y0,X1,Y1     render only the pixels [X0, X1) x [Y0, Y1) of the image (row 0 at
+                         the top); the output is a part whose EXR data window is the crop
+  --resume PART          go on from PART, the .partial.exr of an interrupted render (or a
+                         part) of the same job: only its missing samples are rendered
   -q, --quiet            print neither warnings nor progress (nor the libraries' own lines),
                          only errors and the summary line
   -h, --help             show this help
@@ -92,7 +101,8 @@ options (default in brackets):
 
 Progress goes to stderr when it is a terminal; one summary line always ends the render.
 Ctrl-C (SIGINT) or SIGTERM stops the render within a moment: the samples finished so far go to
-OUT with ".partial" before the extension (out.partial.exr), and OUT itself is left untouched.
+OUT with ".partial" before the extension (out.partial.exr), and OUT itself is left untouched;
+an .exr partial is a part: the same command with --resume OUT.partial.exr finishes it.
 A second signal quits at once, removing any file being written: nothing partial is left behind.
 Images are written whole or not at all (a temporary file beside OUT, renamed into place); the
 temporary file is created before rendering, so an output that cannot be written fails at once.
@@ -121,6 +131,12 @@ struct RenderArgs {
     double sunElevation = 45.0, sunAzimuth = 135.0;
     std::string skyOption; // the first sky option given, for "needs --sky" messages
     bool sunAnglesGiven = false, sunDirGiven = false;
+    // A share of the job: sample indices [samplesFirst, samplesLast) of the pixels in `crop`.
+    bool samplesGiven = false, cropGiven = false;
+    long long samplesFirst = 0, samplesLast = 0;
+    long long crop[4] = {0, 0, 0, 0};
+    std::string resume;
+    bool part() const { return samplesGiven || cropGiven; }
 };
 
 Vec3 parseDirection(const std::string& option, const std::string& v) {
@@ -237,6 +253,37 @@ RenderArgs parseArgs(int argc, char** argv) {
         } else if (opt == "sky-scale") {
             r.skyParameters.scale = float(args.number(opt, 0.0, 1e30));
             if (r.skyOption.empty()) r.skyOption = args.spelled(opt);
+        } else if (opt == "samples") {
+            std::string v = args.value(opt);
+            size_t colon = v.find(':');
+            char* end = nullptr;
+            r.samplesFirst = std::strtoll(v.c_str(), &end, 10);
+            bool ok = colon != std::string::npos && end == v.c_str() + colon && colon > 0;
+            if (ok) {
+                r.samplesLast = std::strtoll(v.c_str() + colon + 1, &end, 10);
+                ok = *end == '\0' && colon + 1 < v.size();
+            }
+            if (!ok || r.samplesFirst < 0 || r.samplesLast <= r.samplesFirst)
+                throw UsageError("option --samples: expected A:B with 0 <= A < B, got \"" + v + "\"");
+            r.samplesGiven = true;
+        } else if (opt == "crop") {
+            std::string v = args.value(opt);
+            std::stringstream in(v);
+            std::string item;
+            int k = 0;
+            bool ok = true;
+            while (std::getline(in, item, ',')) {
+                char* end = nullptr;
+                long long x = std::strtoll(item.c_str(), &end, 10);
+                if (k >= 4 || item.empty() || *end != '\0') ok = false;
+                else r.crop[k] = x;
+                ++k;
+            }
+            if (!ok || k != 4 || r.crop[0] >= r.crop[2] || r.crop[1] >= r.crop[3] || r.crop[0] < 0 || r.crop[1] < 0)
+                throw UsageError("option --crop: expected X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, got \"" + v + "\"");
+            r.cropGiven = true;
+        } else if (opt == "resume") {
+            r.resume = args.value(opt);
         } else if (opt == "q" || opt == "quiet") {
             r.quiet = true;
         } else {
@@ -254,6 +301,9 @@ RenderArgs parseArgs(int argc, char** argv) {
         throw UsageError("--sun-dir and --sun-elevation/--sun-azimuth both place the sun; give one or the other");
     if (!r.sunDirGiven) r.skyParameters.sunDirection = sunDirectionFromAngles(r.sunElevation, r.sunAzimuth);
     bool anyAov = r.aovVariance || r.aovAlbedo || r.aovNormal || r.aovDepth;
+    if ((r.part() || !r.resume.empty()) && formatFromPath(r.output) != ImageFormat::Exr)
+        throw UsageError(std::string(r.samplesGiven ? "--samples" : r.cropGiven ? "--crop" : "--resume") +
+                         " writes a part for pt merge, which needs an .exr output, not \"" + r.output + "\"");
     if (anyAov && formatFromPath(r.output) != ImageFormat::Exr)
         throw UsageError("--aov needs an .exr output; \"" + r.output + "\" cannot hold extra layers");
     // Film sums (2 x 3 doubles), sample counts and the output copies: about 80 bytes a pixel.
@@ -377,8 +427,9 @@ const char* name(HemisphereSampling h) { return h == HemisphereSampling::Cosine 
 const char* name(SamplerKind k) { return k == SamplerKind::Sobol ? "sobol" : "random"; }
 
 // Every option that changes the image, so that a file says how to make it again.
-void addMetadata(Image& image, const RenderArgs& args, const Scene& scene, const std::string& camera,
-                 const RenderResult& result, int threads) {
+// The job's fields (render/render_job.h) and what else describes the scene and its options.
+void addJobMetadata(Image& image, const RenderArgs& args, const Scene& scene, const std::string& camera,
+                    const std::string& sceneHash) {
     auto text = [&](const char* k, const std::string& v) { image.metadata.push_back(ImageAttribute::string(k, v)); };
     auto integer = [&](const char* k, long long v) { image.metadata.push_back(ImageAttribute::integerValue(k, v)); };
     auto real = [&](const char* k, double v) { image.metadata.push_back(ImageAttribute::floatValue(k, v)); };
@@ -388,6 +439,9 @@ void addMetadata(Image& image, const RenderArgs& args, const Scene& scene, const
     text("pt:version", PT_VERSION);
     text("pt:scene", args.scene);
     text("pt:sceneResolved", ec ? args.scene : resolved);
+    text("pt:sceneHash", sceneHash);
+    integer("pt:fullWidth", args.width);
+    integer("pt:fullHeight", args.height);
     text("pt:camera", camera);
     if (const auto& preetham = scene.environment.preetham) { // from --sky or the MTL
         const SkyParameters* sky = &preetham->parameters();
@@ -403,7 +457,6 @@ void addMetadata(Image& image, const RenderArgs& args, const Scene& scene, const
         real("pt:envRotate", double(map->rotation()) * 180.0 / kPi);
         real("pt:envScale", map->scale);
     }
-    integer("pt:spp", result.film.minSamples());
     integer("pt:sppRequested", args.spp);
     integer("pt:seed", (long long)args.settings.seed);
     integer("pt:maxDepth", args.settings.maxDepth);
@@ -413,9 +466,49 @@ void addMetadata(Image& image, const RenderArgs& args, const Scene& scene, const
     text("pt:hemisphere", name(args.settings.hemisphere));
     real("pt:clamp", args.settings.clamp);
     real("pt:exposure", args.exposure);
+}
+
+// What this run did, after the job's fields; a part's share of the job and its window.
+void addRunMetadata(Image& image, const RenderArgs& args, const RenderResult& result, int threads,
+                    uint32_t first, uint32_t last, const PixelWindow& window, bool part) {
+    auto integer = [&](const char* k, long long v) { image.metadata.push_back(ImageAttribute::integerValue(k, v)); };
+    image.metadata.push_back(ImageAttribute::integerValue("pt:spp", result.film.minSamples()));
     integer("pt:threadsRequested", args.threads);
     integer("pt:threads", threads);
-    real("pt:renderSeconds", result.seconds);
+    image.metadata.push_back(ImageAttribute::floatValue("pt:renderSeconds", result.seconds));
+    if (!part) return;
+    addPartLayers(image, result.film);
+    image.x = window.x0, image.y = window.y0;
+    image.fullWidth = args.width, image.fullHeight = args.height;
+    integer("pt:part", 1);
+    integer("pt:samplesFirst", first);
+    integer("pt:samplesLast", last);
+}
+
+// Reads the part to resume and checks it belongs to this job, window and range; "" or why not.
+std::string readResumePart(const std::string& path, const Image& job, const PixelWindow& window, uint32_t first,
+                           uint32_t last, Image& part, Film& film) {
+    std::string error = readImage(path, part);
+    if (!error.empty()) return "--resume: " + error;
+    std::string field, mine, theirs;
+    if (attributeText(part, "pt:part").empty())
+        return "--resume " + path + ": it is not a part (pt render writes one with --samples, --crop, or as the "
+               ".partial.exr of an interrupted .exr render)";
+    if (jobMismatch(job, part, field, mine, theirs))
+        return "--resume " + path + ": it is a part of another job: its " + field + " is \"" + theirs +
+               "\", this command's is \"" + mine + "\"";
+    if (attributeText(part, "pt:samplesFirst") != std::to_string(first) || attributeText(part, "pt:samplesLast") != std::to_string(last))
+        return "--resume " + path + ": it holds samples " + attributeText(part, "pt:samplesFirst") + ":" +
+               attributeText(part, "pt:samplesLast") + ", this command renders " + std::to_string(first) + ":" +
+               std::to_string(last) + " (give the same --samples)";
+    int px = part.fullWidth > 0 ? part.x : 0, py = part.fullWidth > 0 ? part.y : 0;
+    if (px != window.x0 || py != window.y0 || part.width != window.width() || part.height != window.height())
+        return "--resume " + path + ": its pixels are not this command's --crop";
+    error = filmFromPart(part, film);
+    if (!error.empty()) return "--resume " + path + ": " + error;
+    for (size_t p = 0; p < size_t(film.width()) * film.height(); ++p)
+        if (film.count(p) > last - first) return "--resume " + path + ": a pixel holds more samples than its range";
+    return "";
 }
 
 } // namespace
@@ -491,6 +584,7 @@ int renderCommand(int argc, char** argv) {
 
     size_t cameraIndex;
     OutputFile output;
+    std::string sceneHash;
     try {
         cameraIndex = pickCamera(scene, args.camera);
         // A camera that asks for an aspect ratio (glTF) gets it unless --res says otherwise:
@@ -503,12 +597,46 @@ int renderCommand(int argc, char** argv) {
         for (size_t i = 0; i < scene.textures->size(); ++i) inputs.push_back((*scene.textures)[int(i)].path);
         if (!args.env.empty()) inputs.push_back(args.env);
         std::string problem = outputIsInput({args.output, partial}, inputs);
+        // The partial may replace the part it resumes (read whole before rendering); OUT may not.
+        if (problem.empty() && !args.resume.empty()) problem = outputIsInput({args.output}, {args.resume});
         // Created now, before any rendering: a folder that refuses it fails here, not in an hour.
         if (problem.empty()) problem = output.open(args.output);
         if (!problem.empty()) throw UsageError(problem);
+        sceneHash = contentHash(inputs);
     } catch (const UsageError& e) {
         std::fprintf(err, "pt render: %s\n", e.what());
         return 2;
+    }
+
+    // The share of the job this run renders: sample indices [first, last) of the window's pixels.
+    const uint32_t first = uint32_t(args.samplesFirst), last = args.samplesGiven ? uint32_t(args.samplesLast) : uint32_t(args.spp);
+    PixelWindow window{0, 0, args.width, args.height};
+    if (args.samplesGiven && (args.samplesLast > (1 << 24) || args.samplesLast > args.spp)) {
+        std::fprintf(err, "pt: error: --samples %lld:%lld: %s\n", args.samplesFirst, args.samplesLast,
+                     args.samplesLast > (1 << 24)
+                         ? "a pixel has 16777216 (2^24) sample indices per seed; split the job among seeds no further"
+                         : ("the job has -spp " + std::to_string(args.spp) + ", so its sample indices run from 0 to " +
+                            std::to_string(args.spp)).c_str());
+        return 1;
+    }
+    if (args.cropGiven) {
+        if (args.crop[2] > args.width || args.crop[3] > args.height) {
+            std::fprintf(err, "pt: error: --crop %lld,%lld,%lld,%lld passes the %dx%d image\n", args.crop[0], args.crop[1],
+                         args.crop[2], args.crop[3], args.width, args.height);
+            return 1;
+        }
+        window = PixelWindow{int(args.crop[0]), int(args.crop[1]), int(args.crop[2]), int(args.crop[3])};
+    }
+    Image job; // the job's fields, compared with a part to resume and written into the output
+    addJobMetadata(job, args, scene, scene.cameras[cameraIndex].name, sceneHash);
+    Image resumeImage;
+    Film resumeFilm(0, 0);
+    if (!args.resume.empty()) {
+        std::string error = readResumePart(args.resume, job, window, first, last, resumeImage, resumeFilm);
+        if (!error.empty()) {
+            std::fprintf(err, "pt: error: %s\n", error.c_str());
+            return 1;
+        }
     }
 
     auto t1 = std::chrono::steady_clock::now();
@@ -526,12 +654,13 @@ int renderCommand(int argc, char** argv) {
     }
     double bvhSeconds = secondsSince(t1);
 
-    ProgressLine line(progress, uint32_t(args.spp), !args.quiet && isatty(STDERR_FILENO));
+    ProgressLine line(progress, last - first, !args.quiet && isatty(STDERR_FILENO));
     std::optional<RenderResult> rendered;
     try {
+        RenderRange range{first, last, window, args.resume.empty() ? nullptr : &resumeFilm};
         rendered.emplace(renderImage(scene, *accel, scene.cameras[cameraIndex], args.width, args.height,
                                      uint32_t(args.spp), threads, args.settings, &progress,
-                                     args.aovAlbedo || args.aovNormal || args.aovDepth));
+                                     args.aovAlbedo || args.aovNormal || args.aovDepth, range));
     } catch (const std::bad_alloc&) {
         line.stop();
         std::fprintf(err, "pt: error: out of memory for a %dx%d image; choose a smaller --res\n", args.width, args.height);
@@ -540,23 +669,13 @@ int renderCommand(int argc, char** argv) {
     line.stop();
     const RenderResult& result = *rendered;
 
-    Image image;
-    image.width = args.width;
-    image.height = args.height;
-    image.rgb = result.film.mean();
-    // --exposure scales the radiance, and the variance of its mean by the square.
-    const float gain = float(std::exp2(args.exposure));
-    if (args.exposure != 0.0)
-        for (float& v : image.rgb) v *= gain;
-    if (args.aovVariance) {
-        image.layers.push_back({"variance", {"R", "G", "B"}, result.film.varianceOfMean()});
-        if (args.exposure != 0.0)
-            for (float& v : image.layers.back().pixels) v *= gain * gain;
-    }
-    if (args.aovAlbedo) image.layers.push_back({"albedo", {"R", "G", "B"}, result.film.albedo()});
-    if (args.aovNormal) image.layers.push_back({"normal", {"X", "Y", "Z"}, result.film.normal()});
-    if (args.aovDepth) image.layers.push_back({"depth", {"Z"}, result.film.depth()});
-    addMetadata(image, args, scene, scene.cameras[cameraIndex].name, result, threads);
+    Image image = filmImage(result.film, AovSelection{args.aovVariance, args.aovAlbedo, args.aovNormal, args.aovDepth},
+                            args.exposure);
+    image.metadata = job.metadata;
+    // A part (or the partial image of an .exr render, so that it can be resumed or merged) carries
+    // the sums merging needs.
+    bool writePart = args.part() || (result.cancelled && formatFromPath(args.output) == ImageFormat::Exr);
+    addRunMetadata(image, args, result, threads, first, last, window, writePart);
 
     if (result.cancelled) {
         // Never replace OUT with a partial image: the finished samples go beside it.
@@ -584,7 +703,7 @@ int renderCommand(int argc, char** argv) {
     if (gSignal != 0)
         std::fprintf(err, "pt: the signal came after the last sample; the whole image was written\n");
     // A few discarded samples are rounding; many mean light lost somewhere: say so, not just count.
-    uint64_t samples = uint64_t(args.width) * args.height * result.film.minSamples();
+    uint64_t samples = uint64_t(window.width()) * window.height() * result.film.minSamples();
     if (!args.quiet && result.rays.discarded > std::max<uint64_t>(10, samples / 10000))
         std::fprintf(err, "pt: warning: %llu of %llu samples came out NaN or infinite and were dropped; the image is "
                           "darker than it should be where they fell\n",
@@ -594,7 +713,7 @@ int renderCommand(int argc, char** argv) {
         args.settings.clamp > 0.0f ? ", " + std::to_string(r.clamped) + " clamped (--clamp biases the image)" : "";
     std::printf("pt: %dx%d, %u spp, %.3f s render (load %.3f s, bvh %.3f s), %.2f Mrays/s "
                 "(camera %.2fM, continuation %.2fM, shadow %.2fM), %llu discarded samples%s, %d threads -> %s\n",
-                args.width, args.height, result.film.minSamples(), result.seconds, loadSeconds, bvhSeconds,
+                window.width(), window.height(), result.film.minSamples(), result.seconds, loadSeconds, bvhSeconds,
                 double(r.total()) / result.seconds * 1e-6, r.camera * 1e-6, r.continuation * 1e-6, r.shadow * 1e-6,
                 (unsigned long long)r.discarded, clampNote.c_str(), threads, args.output.c_str());
     return 0;

@@ -95,6 +95,11 @@ static std::string encodeImage(ImageFormat format, const Image& image, std::vect
         for (const std::string& c : layer.channels) names.push_back(layer.name + "." + c);
     int nc = int(names.size());
     OIIO::ImageSpec spec(image.width, image.height, nc, OIIO::TypeDesc::FLOAT);
+    if (image.fullWidth > 0) {
+        spec.x = image.x, spec.y = image.y;
+        spec.full_x = spec.full_y = 0;
+        spec.full_width = image.fullWidth, spec.full_height = image.fullHeight;
+    }
     spec.channelnames = names;
     spec.attribute("compression", "zip");
     addAttributes(spec, image);
@@ -161,6 +166,10 @@ std::string readImage(const std::string& path, Image& image) {
     image = Image{};
     image.width = w;
     image.height = h;
+    if (spec.x != spec.full_x || spec.y != spec.full_y || spec.full_width != w || spec.full_height != h) {
+        image.x = spec.x - spec.full_x, image.y = spec.y - spec.full_y;
+        image.fullWidth = spec.full_width, image.fullHeight = spec.full_height;
+    }
     image.parts = parts;
     for (int c = 0; c < nc; ++c)
         image.channelNames.push_back(c < int(spec.channelnames.size()) ? spec.channelnames[c] : "channel" + std::to_string(c));

@@ -33,6 +33,9 @@ struct ImageAttribute {
 
 struct Image {
     int width = 0, height = 0;
+    // Where these pixels lie in a larger image (an EXR's data window inside its display window,
+    // as pbrt and Nuke write crops): origin (x, y) in a fullWidth x fullHeight image. 0: none.
+    int x = 0, y = 0, fullWidth = 0, fullHeight = 0;
     std::vector<float> rgb; // interleaved linear RGB, row 0 at the top
     std::vector<ImageLayer> layers;
     std::vector<ImageAttribute> metadata;

@@ -41,6 +41,21 @@ public:
     std::vector<float> normal() const; // mean over samples, renormalized; 0 where nothing was hit
     std::vector<float> depth() const;  // mean distance over samples that hit; +inf where none did
 
+    // The raw sums of one pixel, for parts (render/film_part.h) and merging them.
+    uint32_t count(size_t pixel) const { return count_[pixel]; }
+    const glm::dvec3& sum(size_t pixel) const { return sum_[pixel]; }
+    const glm::dvec3& sumSq(size_t pixel) const { return sumSq_[pixel]; }
+    const glm::dvec3& albedoSum(size_t pixel) const { return albedo_[pixel]; }
+    const glm::dvec3& normalSum(size_t pixel) const { return normal_[pixel]; }
+    double depthSum(size_t pixel) const { return depth_[pixel]; }
+    uint32_t hits(size_t pixel) const { return hits_[pixel]; }
+    // Adds everything pixel `from` of `other` holds to pixel `to` of this film.
+    void addPixel(size_t to, const Film& other, size_t from) {
+        add(to, other.sum_[from], other.sumSq_[from], other.count_[from]);
+        if (hasFirstHitLayers() && other.hasFirstHitLayers())
+            addFirstHit(to, other.albedo_[from], other.normal_[from], other.depth_[from], other.hits_[from]);
+    }
+
     // Interleaved RGB float images of the mean and of its variance (sample variance / n).
     std::vector<float> mean() const;
     std::vector<float> varianceOfMean() const;

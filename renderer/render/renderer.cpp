@@ -23,20 +23,22 @@ float pixelSpread(const Camera& camera, int height, uint32_t spp) {
 } // namespace
 
 Renderer::Renderer(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
-                   const RenderSettings& settings, uint32_t spp)
+                   const RenderSettings& settings, uint32_t spp, PixelWindow window)
     : scene_(scene), settings_(settings), triangles_(buildShadingTriangles(scene)), tangents_(buildCornerTangents(scene)),
       lights_(scene, settings.lightChoice), camera_(camera, width, height),
       tracer_(scene, triangles_, tangents_, accel, lights_, settings_, pixelSpread(camera, height, spp)),
-      width_(width), height_(height),
-      tilesX_((width + kTileSize - 1) / kTileSize), tilesY_((height + kTileSize - 1) / kTileSize) {}
+      width_(width), height_(height), window_(window.empty() ? PixelWindow{0, 0, width, height} : window),
+      tilesX_((window_.width() + kTileSize - 1) / kTileSize), tilesY_((window_.height() + kTileSize - 1) / kTileSize) {}
 
-RayCounts Renderer::renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress) const {
-    if (settings_.sampler == SamplerKind::Sobol) return renderSamplesWith<SobolSampler>(film, first, last, progress);
-    return renderSamplesWith<IndependentSampler>(film, first, last, progress);
+RayCounts Renderer::renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress,
+                                  const std::vector<uint32_t>* startAt) const {
+    if (settings_.sampler == SamplerKind::Sobol) return renderSamplesWith<SobolSampler>(film, first, last, progress, startAt);
+    return renderSamplesWith<IndependentSampler>(film, first, last, progress, startAt);
 }
 
 template <typename Sampler>
-RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last, RenderProgress* progress) const {
+RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last, RenderProgress* progress,
+                                      const std::vector<uint32_t>* startAt) const {
     tbb::combinable<RayCounts> counts;
     const bool layers = film.hasFirstHitLayers();
     tbb::parallel_for(
@@ -49,15 +51,19 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
             Sampler sampler;
             for (size_t tile = range.begin(); tile != range.end(); ++tile) {
                 if (progress && progress->cancel.load(std::memory_order_relaxed)) return;
-                int x0 = int(tile % tilesX_) * kTileSize, y0 = int(tile / tilesX_) * kTileSize;
-                int x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
+                int x0 = window_.x0 + int(tile % tilesX_) * kTileSize, y0 = window_.y0 + int(tile / tilesX_) * kTileSize;
+                int x1 = std::min(x0 + kTileSize, window_.x1), y1 = std::min(y0 + kTileSize, window_.y1);
                 for (int y = y0; y < y1; ++y)
                     for (int x = x0; x < x1; ++x) {
+                        // The sampler keys a pixel by its place in the full image, the film by its place in the window.
                         uint32_t pixel = uint32_t(y) * uint32_t(width_) + uint32_t(x);
+                        size_t filmPixel = size_t(y - window_.y0) * size_t(window_.width()) + size_t(x - window_.x0);
+                        uint32_t begin = startAt ? std::max(first, (*startAt)[filmPixel]) : first;
+                        if (begin >= last) continue;
                         glm::dvec3 sum(0.0), sumSq(0.0), albedo(0.0), normal(0.0);
                         double depth = 0.0;
                         uint32_t hits = 0;
-                        for (uint32_t s = first; s < last; ++s) {
+                        for (uint32_t s = begin; s < last; ++s) {
                             sampler.startPixelSample(pixel, s, settings_.seed);
                             Vec2 jitter = sampler.get2D(); // box filter: uniform inside the pixel
                             Ray ray = camera_.generate(float(x) + jitter.x, float(y) + jitter.y);
@@ -72,8 +78,8 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
                                 ++hits;
                             }
                         }
-                        film.add(pixel, sum, sumSq, last - first);
-                        if (layers) film.addFirstHit(pixel, albedo, normal, depth, hits);
+                        film.add(filmPixel, sum, sumSq, last - begin);
+                        if (layers) film.addFirstHit(filmPixel, albedo, normal, depth, hits);
                     }
                 if (progress) progress->done.fetch_add(last - first, std::memory_order_relaxed);
             }
@@ -86,24 +92,35 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
 
 RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
                          uint32_t spp, int threads, const RenderSettings& settings, RenderProgress* progress,
-                         bool firstHitLayers) {
-    RenderResult result{Film(width, height), {}};
+                         bool firstHitLayers, const RenderRange& range) {
+    Renderer renderer(scene, accel, camera, width, height, settings, spp, range.window);
+    const PixelWindow& window = renderer.window();
+    RenderResult result{Film(window.width(), window.height()), {}};
     if (firstHitLayers) result.film.enableFirstHitLayers();
-    Renderer renderer(scene, accel, camera, width, height, settings, spp);
+    const uint32_t begin = range.first, end = range.last > 0 ? range.last : spp;
+    // A resumed part's samples are kept; each pixel goes on from where it stopped.
+    std::vector<uint32_t> startAt;
+    if (range.resume) {
+        startAt.resize(size_t(window.width()) * window.height());
+        for (size_t p = 0; p < startAt.size(); ++p) {
+            result.film.addPixel(p, *range.resume, p);
+            startAt[p] = begin + range.resume->count(p);
+        }
+    }
     // Passes of 1, 1, 2, 4, ... samples, at most spp / 32: a cancel request stops the render within
     // one pass of a tile, and the film counts samples per pixel, so what was done stays usable.
-    const uint32_t maxPass = std::max<uint32_t>(1, spp / 32);
-    if (progress) progress->total = uint64_t(spp) * renderer.tileCount();
+    const uint32_t maxPass = std::max<uint32_t>(1, (end - begin) / 32);
+    if (progress) progress->total = uint64_t(end - begin) * renderer.tileCount();
 
     tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
     auto start = std::chrono::steady_clock::now();
     arena.execute([&] {
-        for (uint32_t first = 0; first < spp;) {
+        for (uint32_t first = begin; first < end;) {
             if (progress && progress->cancel.load()) break;
-            uint32_t last = std::min(spp, first + std::clamp(first, 1u, maxPass));
-            result.rays += renderer.renderSamples(result.film, first, last, progress);
+            uint32_t last = std::min(end, first + std::clamp(first - begin, 1u, maxPass));
+            result.rays += renderer.renderSamples(result.film, first, last, progress, range.resume ? &startAt : nullptr);
             first = last;
-            if (progress && !progress->cancel.load()) progress->samplesComplete.store(last);
+            if (progress && !progress->cancel.load()) progress->samplesComplete.store(last - begin);
         }
         if (progress && progress->cancel.load()) result.cancelled = true;
     });

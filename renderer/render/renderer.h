@@ -23,25 +23,38 @@ struct RenderProgress {
     std::atomic<uint32_t> samplesComplete{0}; // samples every pixel holds, after each full pass
 };
 
+// A rectangle of pixels [x0, x1) x [y0, y1) of the full image, row 0 at the top.
+struct PixelWindow {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+    bool empty() const { return x1 <= x0 || y1 <= y0; }
+};
+
 class Renderer {
 public:
     static constexpr int kTileSize = 16;
 
     // `spp` is the render's total samples per pixel: texture footprints shrink with it (each sample
     // filters over 1 / sqrt(spp) of a pixel, at least an eighth), as the samples themselves average
-    // over the pixel.
+    // over the pixel. Only the pixels of `window` (all of them when it is empty) are rendered, into
+    // a film of the window's size; each keeps the random numbers it has in the full image.
     Renderer(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
-             const RenderSettings& settings, uint32_t spp);
+             const RenderSettings& settings, uint32_t spp, PixelWindow window = {});
 
-    // Adds samples [first, last) of every pixel to `film`, in parallel on the calling thread's
-    // task arena. Returns the rays traced.
-    RayCounts renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress = nullptr) const;
+    // Adds samples [first, last) of every pixel of the window to `film`, in parallel on the
+    // calling thread's task arena; a pixel whose `startAt` entry is later starts there (resuming a
+    // part). Returns the rays traced.
+    RayCounts renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress = nullptr,
+                            const std::vector<uint32_t>* startAt = nullptr) const;
 
     size_t tileCount() const { return size_t(tilesX_) * tilesY_; }
+    const PixelWindow& window() const { return window_; }
 
 private:
     template <typename Sampler>
-    RayCounts renderSamplesWith(Film& film, uint32_t first, uint32_t last, RenderProgress* progress) const;
+    RayCounts renderSamplesWith(Film& film, uint32_t first, uint32_t last, RenderProgress* progress,
+                                const std::vector<uint32_t>* startAt) const;
 
     const Scene& scene_;
     RenderSettings settings_;
@@ -50,7 +63,9 @@ private:
     LightSet lights_;
     PinholeCamera camera_;
     PathTracer tracer_;
-    int width_, height_, tilesX_, tilesY_;
+    int width_, height_;
+    PixelWindow window_;
+    int tilesX_, tilesY_;
 };
 
 struct RenderResult {
@@ -60,13 +75,23 @@ struct RenderResult {
     bool cancelled = false;
 };
 
+// What share of a job to render: samples [first, last) (last 0: all spp) of the pixels in
+// `window` (all of them when empty), continuing `resume` when given: a film over the same window
+// whose pixels hold a prefix of the range each (a part), whose samples are kept.
+struct RenderRange {
+    uint32_t first = 0, last = 0;
+    PixelWindow window;
+    const Film* resume = nullptr;
+};
+
 // Renders `spp` samples per pixel with `threads` threads (0: all hardware threads), in passes so
 // that progress can be reported and a cancel request is honoured within one tile's pass. Passes
 // double in size from one sample, so a render stopped at any moment has at least half of the
 // samples it traced in complete passes over the whole image.
-// `firstHitLayers` also accumulates the albedo, normal and depth layers.
+// `firstHitLayers` also accumulates the albedo, normal and depth layers. The film covers
+// `range.window`.
 RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
                          uint32_t spp, int threads, const RenderSettings& settings,
-                         RenderProgress* progress = nullptr, bool firstHitLayers = false);
+                         RenderProgress* progress = nullptr, bool firstHitLayers = false, const RenderRange& range = {});
 
 } // namespace pt

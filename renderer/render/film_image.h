@@ -1,0 +1,30 @@
+// A film as an image. For viewing: the mean and the AOV layers asked for. As a part of a split
+// render (an EXR): also what merging needs to give exactly the image of one process: per pixel the sample count
+// and the double sums (radiance, its square, the first-hit layers), each written as two floats,
+// a high and a low word, which carry a double to about 2^-48. The job's identity and the part's
+// sample range go in the metadata; the window is the EXR's data window inside the full image.
+#pragma once
+
+#include "image/image_io.h"
+#include "render/film.h"
+
+#include <string>
+
+namespace pt {
+
+// Which extra layers an image carries (pt render --aov).
+struct AovSelection {
+    bool variance = false, albedo = false, normal = false, depth = false;
+};
+
+// The film's mean as RGB times 2^exposure (its variance by the square), with the AOVs asked for;
+// first-hit layers need a film that has them.
+Image filmImage(const Film& film, const AovSelection& aovs, double exposure);
+
+// The film's pixels as layers of `image` (its size, window and metadata are the caller's).
+void addPartLayers(Image& image, const Film& film);
+
+// A part's film, sized like the image; "" or what is missing from it.
+std::string filmFromPart(const Image& image, Film& film);
+
+} // namespace pt
