@@ -364,6 +364,40 @@ status=$?
 [[ $status -eq 2 && "$got" == *'folder "locked" is not writable'* ]] || fail "unwritable_folder: exit $status: $got"
 [[ -z "$(ls -A locked)" ]] || fail "unwritable_folder: wrote $(ls -A locked)"
 
+# Split renders and pt merge (issue 14): each fault is a clear message, exit 1 (2 for usage),
+# nothing written, an existing output untouched.
+split=(-spp 8 --res 16x16 -q)
+"$pt" render m.obj "${split[@]}" --samples 0:4 -o part_a.exr >/dev/null || fail "could not render part_a.exr"
+"$pt" render m.obj "${split[@]}" --samples 2:8 -o part_b.exr >/dev/null || fail "could not render part_b.exr"
+"$pt" render m.obj "${split[@]}" --samples 4:8 --seed 7 -o part_seed.exr >/dev/null || fail "could not render part_seed.exr"
+"$pt" render m.obj "${split[@]}" -o whole.exr >/dev/null || fail "could not render whole.exr"
+head -c 600 part_a.exr > truncated_part.exr
+check merge_missing 1 'nowhere.exr' merge part_a.exr nowhere.exr -o out/m.exr
+check merge_truncated 1 'truncated_part.exr' merge part_a.exr truncated_part.exr -o out/m.exr
+check merge_foreign 1 'whole.exr: it is not a part of a split render' merge part_a.exr whole.exr -o out/m.exr
+check merge_png 1 'checker' merge part_a.exr "$gltf/checker.png" -o out/m.exr
+check merge_other_job 1 'part_seed.exr is a part of another job than part_a.exr: its pt:seed is "7", not "0"' merge part_a.exr part_seed.exr -o out/m.exr
+check merge_overlap 1 'part_a.exr and part_b.exr both hold samples 2:4 of pixels [0, 16) x [0, 16)' merge part_a.exr part_b.exr -o out/m.exr
+check merge_no_parts 2 'expected one or more PART.exr files' merge -o out/m.exr
+check merge_aov_png 2 '--aov needs an .exr output' merge part_a.exr --aov variance -o out/m.png
+check merge_aov_missing 1 'part_a.exr has no first-hit sums' merge part_a.exr --aov albedo -o out/m.exr
+check merge_into_part 2 'is also an input' merge part_a.exr -o part_a.exr
+cp part_a.exr keep.exr
+before=$(md5sum keep.exr)
+check merge_keeps_output 1 'both hold samples' merge part_a.exr part_b.exr -o keep.exr
+[[ "$(md5sum keep.exr)" == "$before" ]] || fail "merge_keeps_output: keep.exr changed"
+check samples_form 2 'option --samples: expected A:B with 0 <= A < B, got "4"' render m.obj "${split[@]}" --samples 4 -o out/a.exr
+check samples_empty 2 'option --samples: expected A:B with 0 <= A < B, got "4:4"' render m.obj "${split[@]}" --samples 4:4 -o out/a.exr
+check samples_past_spp 1 '--samples 0:9: the job has -spp 8, so its sample indices run from 0 to 8' render m.obj "${split[@]}" --samples 0:9 -o out/a.exr
+check samples_past_seed 1 'a pixel has 16777216 (2^24) sample indices per seed' render m.obj "${split[@]}" --samples 0:20000000 -o out/a.exr
+check samples_png 2 '--samples writes a part for pt merge, which needs an .exr output' render m.obj "${split[@]}" --samples 0:4 -o out/a.png
+check crop_outside 1 '--crop 0,0,17,16 passes the 16x16 image' render m.obj "${split[@]}" --crop 0,0,17,16 -o out/a.exr
+check crop_form 2 'option --crop: expected X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, got "4,4,2,8"' render m.obj "${split[@]}" --crop 4,4,2,8 -o out/a.exr
+check resume_other_job 1 'it is a part of another job: its pt:seed is "7", this command'"'"'s is "0"' render m.obj "${split[@]}" --samples 4:8 --resume part_seed.exr -o out/a.exr
+check resume_other_range 1 'it holds samples 0:4, this command renders 4:8' render m.obj "${split[@]}" --samples 4:8 --resume part_a.exr -o out/a.exr
+check resume_not_part 1 'whole.exr: it is not a part' render m.obj "${split[@]}" --resume whole.exr -o out/a.exr
+check resume_missing 1 '--resume: cannot read "nowhere.exr"' render m.obj "${split[@]}" --resume nowhere.exr -o out/a.exr
+
 # A good image is never replaced by a failed render.
 "$pt" render m.obj -spp 1 --res 8x8 -q -o good.exr >/dev/null || fail "could not render good.exr"
 before=$(md5sum good.exr)

@@ -30,6 +30,7 @@ def main():
     (na, a, wa), (nb, b, wb) = load(args[0]), load(args[1])
     if wa != wb:
         sys.exit(f"compare_exact: data windows differ: {wa} and {wb}")
+    np.seterr(invalid="ignore", divide="ignore")  # inf - inf where both are +inf: handled by same_inf
     worst, where = 0.0, None
     for c, name in enumerate(na):
         if name not in nb:
