@@ -699,6 +699,10 @@ int renderCommand(int argc, char** argv) {
         std::fprintf(err, "pt: error: %s\n", error.c_str());
         return 1;
     }
+    // The partial this run resumed is inside OUT now: left beside it, a merge of the folder
+    // would count its samples twice.
+    std::error_code ec;
+    if (!args.resume.empty() && std::filesystem::equivalent(args.resume, partial, ec)) std::filesystem::remove(partial, ec);
 
     if (gSignal != 0)
         std::fprintf(err, "pt: the signal came after the last sample; the whole image was written\n");

@@ -57,6 +57,8 @@ if [[ $status -eq 143 && -f whole.partial.exr && ! -f whole.exr ]]; then
   run "$pt" render "$root/scenes/cornell_box.obj" "${long[@]}" --resume whole.partial.exr -o whole.exr
   run "$pt" render "$root/scenes/cornell_box.obj" "${long[@]}" -o never_stopped.exr
   exact resumed whole.exr never_stopped.exr
+  # Its samples are in whole.exr now: the partial is gone, so a merge of the folder cannot count them twice.
+  [[ ! -e whole.partial.exr ]] || { echo "FAIL resume: whole.partial.exr is still there"; fail=1; }
 elif [[ $status -eq 0 ]]; then
   echo "FAIL resume: the render finished within a second; this test needs it to be stopped part-way"; fail=1
 else
