@@ -487,7 +487,7 @@ void addRunMetadata(Image& image, const RenderArgs& args, const RenderResult& re
 
 // Reads the part to resume and checks it belongs to this job, window and range; "" or why not.
 std::string readResumePart(const std::string& path, const Image& job, const PixelWindow& window, uint32_t first,
-                           uint32_t last, Image& part, Film& film) {
+                           uint32_t last, bool firstHitLayers, Image& part, Film& film) {
     std::string error = readImage(path, part);
     if (!error.empty()) return "--resume: " + error;
     std::string field, mine, theirs;
@@ -506,6 +506,9 @@ std::string readResumePart(const std::string& path, const Image& job, const Pixe
         return "--resume " + path + ": its pixels are not this command's --crop";
     error = filmFromPart(part, film);
     if (!error.empty()) return "--resume " + path + ": " + error;
+    if (firstHitLayers && !film.hasFirstHitLayers())
+        return "--resume " + path + ": it has no first-hit sums, so --aov albedo, normal and depth cannot go on from it "
+               "(resume without them)";
     for (size_t p = 0; p < size_t(film.width()) * film.height(); ++p)
         if (film.count(p) > last - first) return "--resume " + path + ": a pixel holds more samples than its range";
     return "";
@@ -632,7 +635,8 @@ int renderCommand(int argc, char** argv) {
     Image resumeImage;
     Film resumeFilm(0, 0);
     if (!args.resume.empty()) {
-        std::string error = readResumePart(args.resume, job, window, first, last, resumeImage, resumeFilm);
+        std::string error = readResumePart(args.resume, job, window, first, last,
+                                           args.aovAlbedo || args.aovNormal || args.aovDepth, resumeImage, resumeFilm);
         if (!error.empty()) {
             std::fprintf(err, "pt: error: %s\n", error.c_str());
             return 1;
