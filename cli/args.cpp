@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <sstream>
 
 namespace pt::cli {
 
@@ -77,6 +78,19 @@ double Args::number(const std::string& option, double lo, double hi) {
         throw UsageError("option " + spelled(option) + ": " + v + " is out of range [" + shortNumber(lo) + ", " +
                          shortNumber(hi) + "]");
     return x;
+}
+
+AovSelection parseAovList(const std::string& value) {
+    AovSelection aovs;
+    std::stringstream list(value);
+    for (std::string name; std::getline(list, name, ',');) {
+        if (name == "variance") aovs.variance = true;
+        else if (name == "albedo") aovs.albedo = true;
+        else if (name == "normal") aovs.normal = true;
+        else if (name == "depth") aovs.depth = true;
+        else throw UsageError("option --aov: unknown layer \"" + name + "\"; known: variance, albedo, normal, depth");
+    }
+    return aovs;
 }
 
 } // namespace pt::cli

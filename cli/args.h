@@ -3,6 +3,8 @@
 // can follow it. Errors are UsageError (exit status 2) and quote the option as it was typed.
 #pragma once
 
+#include "render/film_image.h"
+
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -36,5 +38,8 @@ private:
     bool hasPending_ = false;
     size_t endOfOptions_ = std::string::npos; // index of the first argument after "--"
 };
+
+// The layers of an --aov list ("variance,albedo"); a UsageError names an unknown one.
+AovSelection parseAovList(const std::string& value);
 
 } // namespace pt::cli

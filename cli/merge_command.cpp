@@ -86,14 +86,7 @@ int mergeCommand(int argc, char** argv) {
             } else if (opt == "o" || opt == "output") {
                 outputPath = args.value(opt);
             } else if (opt == "aov") {
-                std::stringstream list(args.value(opt));
-                for (std::string name; std::getline(list, name, ',');) {
-                    if (name == "variance") aovs.variance = true;
-                    else if (name == "albedo") aovs.albedo = true;
-                    else if (name == "normal") aovs.normal = true;
-                    else if (name == "depth") aovs.depth = true;
-                    else throw UsageError("option --aov: unknown layer \"" + name + "\"; known: variance, albedo, normal, depth");
-                }
+                aovs = parseAovList(args.value(opt));
             } else if (opt == "q" || opt == "quiet") {
                 quiet = true;
             } else {
@@ -101,7 +94,7 @@ int mergeCommand(int argc, char** argv) {
             }
         }
         if (paths.empty()) throw UsageError("expected one or more PART.exr files");
-        bool anyAov = aovs.variance || aovs.albedo || aovs.normal || aovs.depth;
+        bool anyAov = aovs.any();
         if (anyAov && formatFromPath(outputPath) != ImageFormat::Exr)
             throw UsageError("--aov needs an .exr output; \"" + outputPath + "\" cannot hold extra layers");
         std::string problem = checkOutputPath(outputPath);
@@ -154,7 +147,7 @@ int mergeCommand(int argc, char** argv) {
         }
         layers &= p.film.hasFirstHitLayers();
     }
-    if ((aovs.albedo || aovs.normal || aovs.depth) && !layers) {
+    if (aovs.firstHit() && !layers) {
         for (const Part& p : parts)
             if (!p.film.hasFirstHitLayers())
                 std::fprintf(err, "pt merge: error: %s has no first-hit sums; --aov albedo, normal and depth need every part "

@@ -120,8 +120,7 @@ struct RenderArgs {
     std::string camera = "0";
     int threads = 0;
     RenderSettings settings;
-    bool aovVariance = false;
-    bool aovAlbedo = false, aovNormal = false, aovDepth = false;
+    AovSelection aovs;
     bool quiet = false;
     std::string env;
     double envRotate = 0.0, envScale = 1.0;
@@ -216,14 +215,7 @@ RenderArgs parseArgs(int argc, char** argv) {
             else if (v == "random") r.settings.sampler = SamplerKind::Random;
             else throw UsageError("option --sampler: expected sobol or random, got \"" + v + "\"");
         } else if (opt == "aov") {
-            std::stringstream list(args.value(opt));
-            for (std::string name; std::getline(list, name, ',');) {
-                if (name == "variance") r.aovVariance = true;
-                else if (name == "albedo") r.aovAlbedo = true;
-                else if (name == "normal") r.aovNormal = true;
-                else if (name == "depth") r.aovDepth = true;
-                else throw UsageError("option --aov: unknown layer \"" + name + "\"; known: variance, albedo, normal, depth");
-            }
+            r.aovs = parseAovList(args.value(opt));
         } else if (opt == "exposure") {
             r.exposure = args.number(opt, -64.0, 64.0);
         } else if (opt == "clamp") {
@@ -300,7 +292,7 @@ RenderArgs parseArgs(int argc, char** argv) {
     if (r.sunAnglesGiven && r.sunDirGiven)
         throw UsageError("--sun-dir and --sun-elevation/--sun-azimuth both place the sun; give one or the other");
     if (!r.sunDirGiven) r.skyParameters.sunDirection = sunDirectionFromAngles(r.sunElevation, r.sunAzimuth);
-    bool anyAov = r.aovVariance || r.aovAlbedo || r.aovNormal || r.aovDepth;
+    bool anyAov = r.aovs.any();
     if ((r.part() || !r.resume.empty()) && formatFromPath(r.output) != ImageFormat::Exr)
         throw UsageError(std::string(r.samplesGiven ? "--samples" : r.cropGiven ? "--crop" : "--resume") +
                          " writes a part for pt merge, which needs an .exr output, not \"" + r.output + "\"");
@@ -636,7 +628,7 @@ int renderCommand(int argc, char** argv) {
     Film resumeFilm(0, 0);
     if (!args.resume.empty()) {
         std::string error = readResumePart(args.resume, job, window, first, last,
-                                           args.aovAlbedo || args.aovNormal || args.aovDepth, resumeImage, resumeFilm);
+                                           args.aovs.firstHit(), resumeImage, resumeFilm);
         if (!error.empty()) {
             std::fprintf(err, "pt: error: %s\n", error.c_str());
             return 1;
@@ -664,7 +656,7 @@ int renderCommand(int argc, char** argv) {
         RenderRange range{first, last, window, args.resume.empty() ? nullptr : &resumeFilm};
         rendered.emplace(renderImage(scene, *accel, scene.cameras[cameraIndex], args.width, args.height,
                                      uint32_t(args.spp), threads, args.settings, &progress,
-                                     args.aovAlbedo || args.aovNormal || args.aovDepth, range));
+                                     args.aovs.firstHit(), range));
     } catch (const std::bad_alloc&) {
         line.stop();
         std::fprintf(err, "pt: error: out of memory for a %dx%d image; choose a smaller --res\n", args.width, args.height);
@@ -673,7 +665,7 @@ int renderCommand(int argc, char** argv) {
     line.stop();
     const RenderResult& result = *rendered;
 
-    Image image = filmImage(result.film, AovSelection{args.aovVariance, args.aovAlbedo, args.aovNormal, args.aovDepth},
+    Image image = filmImage(result.film, args.aovs,
                             args.exposure);
     image.metadata = job.metadata;
     // A part (or the partial image of an .exr render, so that it can be resumed or merged) carries

@@ -21,13 +21,12 @@ import argparse
 import math
 import os
 import sys
-import time
 
 import bpy
 import mathutils
 
 sys.path.insert(0, os.path.dirname(__file__))
-from cycles_lab import look_at, new_scene  # noqa: E402
+from cycles_lab import look_at, new_scene, render_passes  # noqa: E402
 from lab_scene import fail  # noqa: E402
 
 
@@ -121,15 +120,7 @@ def main():
     a = ap.parse_args()
     width, height = (int(x) for x in a.res.lower().split("x"))
     scene = build(a.file, width, height, a.camera, a.max_depth)
-    scene.cycles.samples = a.spp
-    os.makedirs(a.out_dir, exist_ok=True)
-    start = time.time()
-    for p in range(a.passes):
-        scene.cycles.seed = p + 1
-        scene.render.filepath = os.path.join(a.out_dir, f"pass{p:04d}.exr")
-        bpy.ops.render.render(write_still=True)
-        print(f"pass {p + 1}/{a.passes}  {time.time() - start:.0f} s", file=sys.stderr)
-
+    render_passes(scene, a.spp, a.passes, a.out_dir)
 
 if __name__ == "__main__":
     main()

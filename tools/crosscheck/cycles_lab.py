@@ -284,6 +284,18 @@ def build(scene_path, camera_index, width, height, max_depth):
     return scene
 
 
+def render_passes(scene, spp, passes, out_dir):
+    """Independent passes of `spp` samples (seeds 1, 2, ...), each to out_dir/passNNNN.exr."""
+    scene.cycles.samples = spp
+    os.makedirs(out_dir, exist_ok=True)
+    start = time.time()
+    for p in range(passes):
+        scene.cycles.seed = p + 1
+        scene.render.filepath = os.path.join(out_dir, f"pass{p:04d}.exr")
+        bpy.ops.render.render(write_still=True)
+        print(f"pass {p + 1}/{passes}  {time.time() - start:.0f} s", file=sys.stderr)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("scene")
@@ -296,15 +308,7 @@ def main():
     a = ap.parse_args()
     width, height = (int(x) for x in a.res.lower().split("x"))
     scene = build(a.scene, a.camera, width, height, a.max_depth)
-    scene.cycles.samples = a.spp
-    os.makedirs(a.out_dir, exist_ok=True)
-    start = time.time()
-    for p in range(a.passes):
-        scene.cycles.seed = p + 1
-        scene.render.filepath = os.path.join(a.out_dir, f"pass{p:04d}.exr")
-        bpy.ops.render.render(write_still=True)
-        print(f"pass {p + 1}/{a.passes}  {time.time() - start:.0f} s", file=sys.stderr)
-
+    render_passes(scene, a.spp, a.passes, a.out_dir)
 
 if __name__ == "__main__":
     main()
