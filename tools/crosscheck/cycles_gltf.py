@@ -26,19 +26,8 @@ import bpy
 import mathutils
 
 sys.path.insert(0, os.path.dirname(__file__))
-from cycles_lab import look_at, new_scene, render_passes  # noqa: E402
+from cycles_lab import look_at, new_scene, render_passes, unbiased_cycles  # noqa: E402
 from lab_scene import fail  # noqa: E402
-
-
-def unbiased_cycles(scene, max_depth):
-    c = scene.cycles
-    c.max_bounces = c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = max_depth - 1
-    c.transparent_max_bounces = max_depth
-    c.volume_bounces = 0
-    c.caustics_reflective = c.caustics_refractive = True
-    c.blur_glossy = 0.0
-    c.sample_clamp_direct = c.sample_clamp_indirect = 0.0
-    c.light_sampling_threshold = 0.0
 
 
 def frame_bounds(scene):

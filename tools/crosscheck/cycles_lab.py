@@ -239,8 +239,8 @@ def add_camera(scene, position, target, up, fov_y):
     scene.camera = obj
 
 
-def build(scene_path, camera_index, width, height, max_depth):
-    scene = new_scene(width, height)
+def unbiased_cycles(scene, max_depth):
+    """pt's --max-depth D as Cycles' D - 1 bounces, and Cycles' biasing shortcuts off."""
     c = scene.cycles
     c.max_bounces = c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = max_depth - 1
     c.transparent_max_bounces = max_depth
@@ -249,6 +249,11 @@ def build(scene_path, camera_index, width, height, max_depth):
     c.blur_glossy = 0.0
     c.sample_clamp_direct = c.sample_clamp_indirect = 0.0
     c.light_sampling_threshold = 0.0
+
+
+def build(scene_path, camera_index, width, height, max_depth):
+    scene = new_scene(width, height)
+    unbiased_cycles(scene, max_depth)
 
     mtllib, groups = parse_obj(scene_path)
     materials, lights, cameras, environment = parse_mtl(mtllib)
