@@ -53,5 +53,6 @@ private:
 int runConverge(int argc, char** argv);
 int runTextureBench(int argc, char** argv); // bench/texture_bench.cpp
 int runSkyBench(int argc, char** argv);     // bench/sky_bench.cpp
+int runLoadBench(int argc, char** argv);    // bench/load_bench.cpp
 
 } // namespace pt::bench
