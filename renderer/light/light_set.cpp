@@ -191,14 +191,20 @@ float LightSet::distantWeight(size_t j, const Vec3& n) const {
 // Between the tree (item 0) and the distant emitters: half of the probability by the weights,
 // half evenly, so that an estimate that is off (the weights are rough) can cost at most half of
 // the samples and never starve a light. A tree that can light nothing at p gets nothing.
+LightSet::TopChoice LightSet::topChoice(const Vec3& p, const Vec3& n) const {
+    TopChoice t;
+    t.treeWeight = treeWeight(p, n);
+    t.sum = t.treeWeight;
+    for (size_t j = 0; j < distant_.size(); ++j) t.sum += distantWeight(j, n);
+    t.items = float(distant_.size() + (t.treeWeight > 0.0f ? 1 : 0));
+    return t;
+}
+
 uint32_t LightSet::chooseFromTree(float u, const Vec3& p, const Vec3& n, float& pmf) const {
-    float wTree = treeWeight(p, n), sum = wTree;
-    for (size_t j = 0; j < distant_.size(); ++j) sum += distantWeight(j, n);
-    float items = float(distant_.size() + (wTree > 0.0f ? 1 : 0));
-    auto probability = [&](float w) { return sum > 0.0f ? 0.5f * w / sum + 0.5f / items : 1.0f / items; };
+    const TopChoice top = topChoice(p, n);
     float cdf = 0.0f;
-    if (wTree > 0.0f) {
-        float pTree = probability(wTree);
+    if (top.treeWeight > 0.0f) {
+        float pTree = top.probability(top.treeWeight);
         if (u < pTree || distant_.empty()) {
             float pLeaf;
             uint32_t e = tree_.sample(p, n, std::min(u / pTree, 0x1.fffffep-1f), pLeaf);
@@ -208,7 +214,7 @@ uint32_t LightSet::chooseFromTree(float u, const Vec3& p, const Vec3& n, float& 
         cdf = pTree;
     }
     for (size_t j = 0; j < distant_.size(); ++j) {
-        float pj = probability(distantWeight(j, n));
+        float pj = top.probability(distantWeight(j, n));
         cdf += pj;
         if (u < cdf || j + 1 == distant_.size()) {
             pmf = pj;
@@ -220,13 +226,10 @@ uint32_t LightSet::chooseFromTree(float u, const Vec3& p, const Vec3& n, float& 
 }
 
 float LightSet::pmfFromTree(size_t i, const Vec3& p, const Vec3& n) const {
-    float wTree = treeWeight(p, n), sum = wTree;
-    for (size_t j = 0; j < distant_.size(); ++j) sum += distantWeight(j, n);
-    float items = float(distant_.size() + (wTree > 0.0f ? 1 : 0));
-    auto probability = [&](float w) { return sum > 0.0f ? 0.5f * w / sum + 0.5f / items : 1.0f / items; };
-    if (i >= boundedCount_) return probability(distantWeight(i - boundedCount_, n));
-    if (!(wTree > 0.0f)) return 0.0f;
-    return probability(wTree) * tree_.pmf(p, n, uint32_t(i));
+    const TopChoice top = topChoice(p, n);
+    if (i >= boundedCount_) return top.probability(distantWeight(i - boundedCount_, n));
+    if (!(top.treeWeight > 0.0f)) return 0.0f;
+    return top.probability(top.treeWeight) * tree_.pmf(p, n, uint32_t(i));
 }
 
 LightSample LightSet::sample(size_t i, const Vec3& p, Vec2 u) const {

@@ -97,6 +97,12 @@ private:
     };
     float distantWeight(size_t j, const Vec3& n) const;
     float treeWeight(const Vec3& p, const Vec3& n) const;
+    // The weights at a point that chooseFromTree and pmfFromTree both divide up.
+    struct TopChoice {
+        float treeWeight = 0.0f, sum = 0.0f, items = 0.0f;
+        float probability(float w) const { return sum > 0.0f ? 0.5f * w / sum + 0.5f / items : 1.0f / items; }
+    };
+    TopChoice topChoice(const Vec3& p, const Vec3& n) const;
     LightTree tree_;
     std::vector<DistantEstimate> distant_;
     uint32_t boundedCount_ = 0;
