@@ -111,15 +111,7 @@ int mergeCommand(int argc, char** argv) {
     for (size_t i = 0; i < paths.size(); ++i) {
         Part& p = parts[i];
         p.path = paths[i];
-        std::string error = readImage(p.path, p.image);
-        if (error.empty() && attributeText(p.image, "pt:part").empty())
-            error = p.path + ": it is not a part of a split render (pt render writes parts with --samples or --crop, "
-                             "and .partial.exr files when interrupted)";
-        if (error.empty()) {
-            error = filmFromPart(p.image, p.film);
-            if (!error.empty()) error = p.path + ": " + error;
-        }
-        if (!error.empty()) {
+        if (std::string error = readPart(p.path, p.image, p.film); !error.empty()) {
             std::fprintf(err, "pt merge: error: %s\n", error.c_str());
             return 1;
         }

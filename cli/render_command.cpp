@@ -480,12 +480,9 @@ void addRunMetadata(Image& image, const RenderArgs& args, const RenderResult& re
 // Reads the part to resume and checks it belongs to this job, window and range; "" or why not.
 std::string readResumePart(const std::string& path, const Image& job, const PixelWindow& window, uint32_t first,
                            uint32_t last, bool firstHitLayers, Image& part, Film& film) {
-    std::string error = readImage(path, part);
+    std::string error = readPart(path, part, film);
     if (!error.empty()) return "--resume: " + error;
     std::string field, mine, theirs;
-    if (attributeText(part, "pt:part").empty())
-        return "--resume " + path + ": it is not a part (pt render writes one with --samples, --crop, or as the "
-               ".partial.exr of an interrupted .exr render)";
     if (jobMismatch(job, part, field, mine, theirs))
         return "--resume " + path + ": it is a part of another job: its " + field + " is \"" + theirs +
                "\", this command's is \"" + mine + "\"";
@@ -496,8 +493,6 @@ std::string readResumePart(const std::string& path, const Image& job, const Pixe
     int px = part.fullWidth > 0 ? part.x : 0, py = part.fullWidth > 0 ? part.y : 0;
     if (px != window.x0 || py != window.y0 || part.width != window.width() || part.height != window.height())
         return "--resume " + path + ": its pixels are not this command's --crop";
-    error = filmFromPart(part, film);
-    if (!error.empty()) return "--resume " + path + ": " + error;
     if (firstHitLayers && !film.hasFirstHitLayers())
         return "--resume " + path + ": it has no first-hit sums, so --aov albedo, normal and depth cannot go on from it "
                "(resume without them)";

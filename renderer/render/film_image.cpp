@@ -1,5 +1,7 @@
 #include "render/film_image.h"
 
+#include "render/render_job.h"
+
 #include <cmath>
 
 #include <algorithm>
@@ -105,6 +107,16 @@ std::string filmFromPart(const Image& image, Film& film) {
         film.addFirstHit(p, a, nm, value(depth, depthLo, p), uint32_t(hits->pixels[p]));
     }
     return "";
+}
+
+std::string readPart(const std::string& path, Image& image, Film& film) {
+    std::string error = readImage(path, image);
+    if (!error.empty()) return error;
+    if (attributeText(image, "pt:part").empty())
+        return path + ": it is not a part of a split render (pt render writes parts with --samples or --crop, and "
+                      ".partial.exr files when interrupted)";
+    error = filmFromPart(image, film);
+    return error.empty() ? "" : path + ": " + error;
 }
 
 } // namespace pt

@@ -29,4 +29,7 @@ void addPartLayers(Image& image, const Film& film);
 // A part's film, sized like the image; "" or what is missing from it.
 std::string filmFromPart(const Image& image, Film& film);
 
+// Reads the part at `path` (pt:part in its metadata) and its film; "" or the error, naming the file.
+std::string readPart(const std::string& path, Image& image, Film& film);
+
 } // namespace pt
