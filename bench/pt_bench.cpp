@@ -38,6 +38,7 @@ struct Options {
     int threads = 0;
     bool scaling = true;
     bool configs = false;
+    bool batching = false;
     std::string json = "bench/results/latest.json";
 };
 
@@ -64,14 +65,16 @@ FrameSeries timeFrames(const Renderer& renderer, Film& film, int frames, int thr
 }
 
 // Replays recorded rays once through bare Embree calls, in chunks on the calling arena's threads.
-double replayOnce(const Accel& accel, const std::vector<RayRecord>& rays) {
+// `chunk` rays go to a task (4096: about a tile's worth of paths, which keeps the recorded
+// coherence); `mode` says which of Embree's calls trace them (Accel::Replay).
+double replayOnce(const Accel& accel, const std::vector<RayRecord>& rays, Accel::Replay mode = Accel::Replay::AsTraced,
+                  size_t chunk = 4096) {
     std::atomic<size_t> hits{0};
     auto t0 = Clock::now();
-    const size_t chunk = 4096; // about a tile's worth of paths: keeps the recorded coherence
     tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), chunk), [&](const tbb::blocked_range<size_t>& b) {
         _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
         _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
-        hits += accel.traceBare(rays.data() + b.begin(), b.size());
+        hits += accel.traceBare(rays.data() + b.begin(), b.size(), mode);
     }, tbb::simple_partitioner());
     return secondsSince(t0);
 }
@@ -87,12 +90,14 @@ double timeReplay(const Accel& accel, const std::vector<RayRecord>& rays, int th
 
 // Efficiency from interleaved pairs: a frame of the path tracer, then a bare replay of the same
 // number of rays, so both see the same machine (these machines are shared and noisy).
+// `ratio` is against the calls pt makes (camera packets); `ratioOneByOne` against rtcIntersect1
+// and rtcOccluded1 for every ray.
 struct Efficiency {
-    double ratio = 0, pathTracerRps = 0, bareRps = 0;
+    double ratio = 0, ratioOneByOne = 0, pathTracerRps = 0, bareRps = 0;
 };
 Efficiency measureEfficiency(const Renderer& renderer, Film& film, const Accel& accel,
                              const std::vector<RayRecord>& rays, int threads, int pairs) {
-    std::vector<double> ratios, pt, bare;
+    std::vector<double> ratios, ratiosOneByOne, pt, bare;
     tbb::task_arena(threads).execute([&] {
         renderer.renderSamples(film, 0, 1);
         replayOnce(accel, rays);
@@ -101,12 +106,14 @@ Efficiency measureEfficiency(const Renderer& renderer, Film& film, const Accel& 
             RayCounts counts = renderer.renderSamples(film, uint32_t(k), uint32_t(k + 1));
             double ptRps = double(counts.total()) / secondsSince(t0);
             double bareRps = double(rays.size()) / replayOnce(accel, rays);
+            double oneByOneRps = double(rays.size()) / replayOnce(accel, rays, Accel::Replay::OneByOne);
             ratios.push_back(ptRps / bareRps);
+            ratiosOneByOne.push_back(ptRps / oneByOneRps);
             pt.push_back(ptRps);
             bare.push_back(bareRps);
         }
     });
-    return {medianOf(ratios), medianOf(pt), medianOf(bare)};
+    return {medianOf(ratios), medianOf(ratiosOneByOne), medianOf(pt), medianOf(bare)};
 }
 
 std::vector<RayRecord> onlyKind(const std::vector<RayRecord>& rays, RayRecord::Kind kind) {
@@ -195,6 +202,31 @@ int runBench(const Options& o) {
         });
     }
 
+    // What batching would buy (issue 15's leads): camera rays in packets of 8, shadow rays in
+    // streams of a tile's size or more, against one-by-one calls, in interleaved rounds.
+    if (o.batching) {
+        std::printf("  Embree's batched calls against one ray at a time (median of %d interleaved rounds):\n", 2 * repeats);
+        for (RayRecord::Kind kind : {RayRecord::Kind::Camera, RayRecord::Kind::Shadow}) {
+            std::vector<RayRecord> subset = onlyKind(log, kind);
+            for (size_t chunk : {256, 1024, 4096}) {
+                std::vector<double> single, batched;
+                tbb::task_arena(threads).execute([&] {
+                    const Accel::Replay batch = kind == RayRecord::Kind::Camera ? Accel::Replay::AsTraced
+                                                                                : Accel::Replay::ShadowStreams;
+                    replayOnce(*accel, subset, batch, chunk);
+                    for (int r = 0; r < 2 * repeats; ++r) {
+                        single.push_back(replayOnce(*accel, subset, Accel::Replay::OneByOne, chunk));
+                        batched.push_back(replayOnce(*accel, subset, batch, chunk));
+                    }
+                });
+                double a = double(subset.size()) / medianOf(single), b = double(subset.size()) / medianOf(batched);
+                std::printf("    %-7s rays, batches of %4zu: one by one %6.2f, %s %6.2f Mrays/s (x%.2f)\n",
+                            kind == RayRecord::Kind::Camera ? "camera" : "shadow", chunk, a * 1e-6,
+                            kind == RayRecord::Kind::Camera ? "rtcIntersect8 " : "rtcOccluded1M", b * 1e-6, b / a);
+            }
+        }
+    }
+
     std::vector<std::pair<int, double>> scaling;
     if (o.scaling)
         for (int t = 1; t <= hw; ++t)
@@ -212,8 +244,10 @@ int runBench(const Options& o) {
                 (unsigned long long)rays.camera, (unsigned long long)rays.continuation, (unsigned long long)rays.shadow,
                 pathLength);
     std::printf("  path tracer %.2f Mrays/s (%.2f in the interleaved pairs); bare Embree on the same rays %.2f Mrays/s;\n"
-                "  efficiency %.1f %% (median of frame/replay pairs)\n",
-                rps * 1e-6, eff.pathTracerRps * 1e-6, bareRps * 1e-6, 100.0 * efficiency);
+                "  efficiency %.1f %% (median of frame/replay pairs; camera rays in packets of %d in both);\n"
+                "  %.1f %% against bare rtcIntersect1/rtcOccluded1 for every ray\n",
+                rps * 1e-6, eff.pathTracerRps * 1e-6, bareRps * 1e-6, 100.0 * efficiency, Accel::kPacket,
+                100.0 * eff.ratioOneByOne);
     std::printf("  bare Embree by kind: camera %.1f, continuation %.1f, shadow %.1f Mrays/s\n", kinds[0].rps * 1e-6,
                 kinds[1].rps * 1e-6, kinds[2].rps * 1e-6);
     if (!configs.empty()) {
@@ -269,6 +303,7 @@ int runBench(const Options& o) {
 int usage(int status) {
     std::fputs("usage: pt-bench [--scene PATH] [--frames K] [--res WxH] [--threads N] [--no-scaling] [--json PATH]\n"
                "                [--embree-configs]   (also compare Embree's build options on the recorded rays)\n"
+               "                [--batching]   (also time camera-ray packets and shadow-ray streams on them)\n"
                "       pt-bench converge --help\n"
                "       pt-bench textures [--rounds R] [--size N]   (cost of a texture lookup)\n"
                "       pt-bench sky [--rounds R]   (the baked sky map against the analytic model)\n"
@@ -302,6 +337,7 @@ int main(int argc, char** argv) {
             if (std::sscanf(next().c_str(), "%dx%d", &o.width, &o.height) != 2) return usage(2);
         } else if (a == "--no-scaling") o.scaling = false;
         else if (a == "--embree-configs") o.configs = true;
+        else if (a == "--batching") o.batching = true;
         else if (a == "--json") o.json = next();
         else if (a == "-h" || a == "--help") return usage(0);
         else return usage(2);

@@ -50,7 +50,7 @@ TEST(RayOffset, NoSelfIntersectionAtAnyScale) {
                         if (std::abs(glm::dot(dir, sp.ng)) < 1e-3f) continue; // grazing: either side is fine
                         Ray ray = spawnRay(sp, dir);
                         ++trials;
-                        Hit again = accel.intersect(ray, false);
+                        Hit again = accel.intersect(ray);
                         if (again.found()) {
                             if (failures++ == 0)
                                 firstFailure = "shape " + std::to_string(int(shape)) + " scale " + std::to_string(scale) +

@@ -175,26 +175,13 @@ static void fillRay(RTCRay& r, const Ray& ray, float tfar) {
     r.flags = 0;
 }
 
-Hit Accel::intersect(const Ray& ray, bool coherent, float tfar) const {
-    if (log_) log_->push_back({ray.origin, tfar, ray.dir, coherent ? RayRecord::Kind::Camera : RayRecord::Kind::Continuation});
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-    RTCRayHit rh;
-    fillRay(rh.ray, ray, tfar);
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(impl_->scene, &context, &rh);
+uint32_t Accel::sceneTriangle(unsigned geomID, unsigned primID) const {
+    return geomID == kCutoutGeometry      ? impl_->cutouts.triangle[primID]
+           : impl_->opaqueTriangle.empty() ? primID
+                                           : impl_->opaqueTriangle[primID];
+}
 
-    Hit hit;
-    if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
-        hit.t = rh.ray.tfar;
-        hit.prim = rh.hit.geomID == kCutoutGeometry ? impl_->cutouts.triangle[rh.hit.primID]
-                   : impl_->opaqueTriangle.empty()  ? rh.hit.primID
-                                                    : impl_->opaqueTriangle[rh.hit.primID];
-        hit.u = rh.hit.u;
-        hit.v = rh.hit.v;
-    }
+void Accel::addSphereHits(const Ray& ray, float tfar, Hit& hit) const {
     for (size_t i = 0; i < impl_->spheres.size(); ++i) {
         const glm::vec4& s = impl_->spheres[i];
         float t = intersectSphere(ray.origin, ray.dir, Vec3(s), s.w);
@@ -204,7 +191,62 @@ Hit Accel::intersect(const Ray& ray, bool coherent, float tfar) const {
             hit.onSphere = true;
         }
     }
+}
+
+Hit Accel::intersect(const Ray& ray, float tfar) const {
+    if (log_) log_->push_back({ray.origin, tfar, ray.dir, RayRecord::Kind::Continuation});
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    RTCRayHit rh;
+    fillRay(rh.ray, ray, tfar);
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl_->scene, &context, &rh);
+
+    Hit hit;
+    if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+        hit.t = rh.ray.tfar;
+        hit.prim = sceneTriangle(rh.hit.geomID, rh.hit.primID);
+        hit.u = rh.hit.u;
+        hit.v = rh.hit.v;
+    }
+    addSphereHits(ray, tfar, hit);
     return hit;
+}
+
+void Accel::intersectCameraRays(const Ray* rays, const bool* active, int count, Hit* hits) const {
+    alignas(32) RTCRayHit8 packet;
+    alignas(32) int valid[kPacket];
+    for (int i = 0; i < kPacket; ++i) {
+        valid[i] = i < count && active[i] ? -1 : 0;
+        // Inactive lanes still get finite values: Embree may compute on them before masking.
+        const Ray& r = valid[i] ? rays[i] : rays[0];
+        RTCRay8& p = packet.ray;
+        p.org_x[i] = r.origin.x, p.org_y[i] = r.origin.y, p.org_z[i] = r.origin.z;
+        p.dir_x[i] = r.dir.x, p.dir_y[i] = r.dir.y, p.dir_z[i] = r.dir.z;
+        p.tnear[i] = 0.0f, p.tfar[i] = kInf, p.time[i] = 0.0f;
+        p.mask[i] = 0xFFFFFFFFu, p.id[i] = 0, p.flags[i] = 0;
+        packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+        packet.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
+        if (valid[i] && log_) log_->push_back({r.origin, kInf, r.dir, RayRecord::Kind::Camera});
+    }
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect8(valid, impl_->scene, &context, &packet);
+    for (int i = 0; i < count; ++i) {
+        if (!valid[i]) continue;
+        Hit& hit = hits[i];
+        hit = Hit{};
+        if (packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID) {
+            hit.t = packet.ray.tfar[i];
+            hit.prim = sceneTriangle(packet.hit.geomID[i], packet.hit.primID[i]);
+            hit.u = packet.hit.u[i];
+            hit.v = packet.hit.v[i];
+        }
+        addSphereHits(rays[i], kInf, hit);
+    }
 }
 
 bool Accel::occluded(const Ray& ray, float tfar, int skipLight) const {
@@ -222,8 +264,21 @@ bool Accel::occluded(const Ray& ray, float tfar, int skipLight) const {
     return r.tfar < 0.0f; // Embree sets tfar to -inf when it finds an occluder
 }
 
-size_t Accel::traceBare(const RayRecord* rays, size_t count) const {
+size_t Accel::traceBare(const RayRecord* rays, size_t count, Replay mode) const {
     size_t hits = 0;
+    std::vector<RTCRay> shadowStream;
+    alignas(32) RTCRayHit8 packet;
+    alignas(32) int valid[kPacket];
+    int lanes = 0;
+    RTCIntersectContext coherent;
+    rtcInitIntersectContext(&coherent);
+    coherent.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    auto flushPacket = [&] {
+        for (int i = lanes; i < kPacket; ++i) valid[i] = 0;
+        rtcIntersect8(valid, impl_->scene, &coherent, &packet);
+        for (int i = 0; i < lanes; ++i) hits += packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
+        lanes = 0;
+    };
     for (size_t i = 0; i < count; ++i) {
         const RayRecord& r = rays[i];
         RTCIntersectContext context;
@@ -231,8 +286,21 @@ size_t Accel::traceBare(const RayRecord* rays, size_t count) const {
         if (r.kind == RayRecord::Kind::Shadow) {
             RTCRay ray;
             fillRay(ray, Ray{r.origin, r.dir}, r.tfar);
+            if (mode == Replay::ShadowStreams) {
+                shadowStream.push_back(ray);
+                continue;
+            }
             rtcOccluded1(impl_->scene, &context, &ray);
             hits += ray.tfar < 0.0f;
+        } else if (r.kind == RayRecord::Kind::Camera && mode != Replay::OneByOne) {
+            RTCRay8& p = packet.ray;
+            p.org_x[lanes] = r.origin.x, p.org_y[lanes] = r.origin.y, p.org_z[lanes] = r.origin.z;
+            p.dir_x[lanes] = r.dir.x, p.dir_y[lanes] = r.dir.y, p.dir_z[lanes] = r.dir.z;
+            p.tnear[lanes] = 0.0f, p.tfar[lanes] = r.tfar, p.time[lanes] = 0.0f;
+            p.mask[lanes] = 0xFFFFFFFFu, p.id[lanes] = 0, p.flags[lanes] = 0;
+            packet.hit.geomID[lanes] = RTC_INVALID_GEOMETRY_ID;
+            valid[lanes++] = -1;
+            if (lanes == kPacket) flushPacket();
         } else {
             if (r.kind == RayRecord::Kind::Camera) context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
             RTCRayHit rh;
@@ -241,6 +309,11 @@ size_t Accel::traceBare(const RayRecord* rays, size_t count) const {
             rtcIntersect1(impl_->scene, &context, &rh);
             hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
         }
+    }
+    if (lanes > 0) flushPacket();
+    if (!shadowStream.empty()) {
+        rtcOccluded1M(impl_->scene, &coherent, shadowStream.data(), unsigned(shadowStream.size()), sizeof(RTCRay));
+        for (const RTCRay& ray : shadowStream) hits += ray.tfar < 0.0f;
     }
     return hits;
 }

@@ -20,7 +20,8 @@ constexpr int kRouletteDepth = 3; // scattering events before Russian roulette s
 } // namespace
 
 template <typename Sampler>
-Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& counts, FirstHit* first) const {
+Spectrum PathTracer::trace(const Ray& cameraRay, const Hit& cameraHit, Sampler& sampler, RayCounts& counts,
+                           FirstHit* first) const {
     const bool sampleLights = settings_.lightSampling != LightSampling::Bsdf && !lights_.empty();
     const bool weighHits = settings_.lightSampling == LightSampling::Mis;
 
@@ -46,7 +47,7 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
     };
 
     for (int depth = 0;; ++depth) { // depth = scattering events so far
-        Hit hit = accel_.intersect(ray, depth == 0);
+        Hit hit = depth == 0 ? cameraHit : accel_.intersect(ray);
         if (!hit.found()) {
             const Environment& env = scene_.environment;
             L += beta * env.radiance(ray.dir) * hitWeight(lights_.environmentEmitter(), kInf);
@@ -164,7 +165,7 @@ Spectrum PathTracer::trace(const Ray& cameraRay, Sampler& sampler, RayCounts& co
     return L;
 }
 
-template Spectrum PathTracer::trace(const Ray&, IndependentSampler&, RayCounts&, FirstHit*) const;
-template Spectrum PathTracer::trace(const Ray&, SobolSampler&, RayCounts&, FirstHit*) const;
+template Spectrum PathTracer::trace(const Ray&, const Hit&, IndependentSampler&, RayCounts&, FirstHit*) const;
+template Spectrum PathTracer::trace(const Ray&, const Hit&, SobolSampler&, RayCounts&, FirstHit*) const;
 
 } // namespace pt

@@ -30,10 +30,12 @@ public:
         : scene_(scene), triangles_(triangles), tangents_(tangents), accel_(accel), lights_(lights),
           settings_(settings), pixelSpread_(pixelSpread) {}
 
-    // Radiance arriving at the camera along `ray`. Sampler is IndependentSampler or SobolSampler;
-    // the choice is made once per render, not per ray.
+    // Radiance arriving at the camera along `cameraRay`, whose closest hit the caller traced
+    // (camera rays go to Embree in packets). Sampler is IndependentSampler or SobolSampler; the
+    // choice is made once per render, not per ray.
     template <typename Sampler>
-    Spectrum trace(const Ray& cameraRay, Sampler& sampler, RayCounts& counts, FirstHit* first = nullptr) const;
+    Spectrum trace(const Ray& cameraRay, const Hit& cameraHit, Sampler& sampler, RayCounts& counts,
+                   FirstHit* first = nullptr) const;
 
 private:
     const Scene& scene_;

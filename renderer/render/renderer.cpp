@@ -20,11 +20,31 @@ float pixelSpread(const Camera& camera, int height, uint32_t spp) {
     return pixel * std::max(0.125f, 1.0f / std::sqrt(float(std::max(spp, 1u))));
 }
 
+// One pixel's sums over the samples of a pass, in double so that long renders do not lose the
+// small values to the large.
+struct PixelSums {
+    glm::dvec3 sum{0.0}, sumSq{0.0}, albedo{0.0}, normal{0.0};
+    double depth = 0.0;
+    uint32_t hits = 0;
+
+    void add(const Spectrum& radiance, const FirstHit& first) {
+        glm::dvec3 L(radiance);
+        sum += L;
+        sumSq += L * L;
+        if (first.depth < kInf) {
+            albedo += glm::dvec3(first.albedo);
+            normal += glm::dvec3(first.normal);
+            depth += first.depth;
+            ++hits;
+        }
+    }
+};
+
 } // namespace
 
 Renderer::Renderer(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
                    const RenderSettings& settings, uint32_t spp, PixelWindow window)
-    : scene_(scene), settings_(settings), triangles_(buildShadingTriangles(scene)), tangents_(buildCornerTangents(scene)),
+    : scene_(scene), accel_(accel), settings_(settings), triangles_(buildShadingTriangles(scene)), tangents_(buildCornerTangents(scene)),
       lights_(scene, settings.lightChoice), camera_(camera, width, height),
       tracer_(scene, triangles_, tangents_, accel, lights_, settings_, pixelSpread(camera, height, spp)),
       width_(width), height_(height), window_(window.empty() ? PixelWindow{0, 0, width, height} : window),
@@ -48,38 +68,50 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
             _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
             _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
             RayCounts& local = counts.local();
-            Sampler sampler;
+            // A row of a tile goes in groups of kPacket pixels: their camera rays of one sample
+            // index are traced as one packet, then each path goes on alone.
+            constexpr int kPacket = Accel::kPacket;
+            Sampler samplers[kPacket];
             for (size_t tile = range.begin(); tile != range.end(); ++tile) {
                 if (progress && progress->cancel.load(std::memory_order_relaxed)) return;
                 int x0 = window_.x0 + int(tile % tilesX_) * kTileSize, y0 = window_.y0 + int(tile / tilesX_) * kTileSize;
                 int x1 = std::min(x0 + kTileSize, window_.x1), y1 = std::min(y0 + kTileSize, window_.y1);
                 for (int y = y0; y < y1; ++y)
-                    for (int x = x0; x < x1; ++x) {
-                        // The sampler keys a pixel by its place in the full image, the film by its place in the window.
-                        uint32_t pixel = uint32_t(y) * uint32_t(width_) + uint32_t(x);
-                        size_t filmPixel = size_t(y - window_.y0) * size_t(window_.width()) + size_t(x - window_.x0);
-                        uint32_t begin = startAt ? std::max(first, (*startAt)[filmPixel]) : first;
-                        if (begin >= last) continue;
-                        glm::dvec3 sum(0.0), sumSq(0.0), albedo(0.0), normal(0.0);
-                        double depth = 0.0;
-                        uint32_t hits = 0;
-                        for (uint32_t s = begin; s < last; ++s) {
-                            sampler.startPixelSample(pixel, s, settings_.seed);
-                            Vec2 jitter = sampler.get2D(); // box filter: uniform inside the pixel
-                            Ray ray = camera_.generate(float(x) + jitter.x, float(y) + jitter.y);
-                            FirstHit hit;
-                            glm::dvec3 L(tracer_.trace(ray, sampler, local, layers ? &hit : nullptr));
-                            sum += L;
-                            sumSq += L * L;
-                            if (layers && hit.depth < kInf) {
-                                albedo += glm::dvec3(hit.albedo);
-                                normal += glm::dvec3(hit.normal);
-                                depth += hit.depth;
-                                ++hits;
+                    for (int gx = x0; gx < x1; gx += kPacket) {
+                        const int lanes = std::min(kPacket, x1 - gx);
+                        PixelSums sums[kPacket];
+                        uint32_t begin[kPacket], groupBegin = last;
+                        for (int i = 0; i < lanes; ++i) {
+                            size_t filmPixel = size_t(y - window_.y0) * size_t(window_.width()) + size_t(gx + i - window_.x0);
+                            begin[i] = startAt ? std::max(first, (*startAt)[filmPixel]) : first;
+                            groupBegin = std::min(groupBegin, begin[i]);
+                        }
+                        for (uint32_t s = groupBegin; s < last; ++s) {
+                            Ray rays[kPacket];
+                            bool active[kPacket] = {};
+                            for (int i = 0; i < lanes; ++i) {
+                                if (s < begin[i]) continue;
+                                active[i] = true;
+                                // The sampler keys a pixel by its place in the full image.
+                                samplers[i].startPixelSample(uint32_t(y) * uint32_t(width_) + uint32_t(gx + i), s, settings_.seed);
+                                Vec2 jitter = samplers[i].get2D(); // box filter: uniform inside the pixel
+                                rays[i] = camera_.generate(float(gx + i) + jitter.x, float(y) + jitter.y);
+                            }
+                            Hit hits[kPacket];
+                            accel_.intersectCameraRays(rays, active, lanes, hits);
+                            for (int i = 0; i < lanes; ++i) {
+                                if (!active[i]) continue;
+                                FirstHit hit;
+                                sums[i].add(tracer_.trace(rays[i], hits[i], samplers[i], local, layers ? &hit : nullptr), hit);
                             }
                         }
-                        film.add(filmPixel, sum, sumSq, last - begin);
-                        if (layers) film.addFirstHit(filmPixel, albedo, normal, depth, hits);
+                        for (int i = 0; i < lanes; ++i) {
+                            if (begin[i] >= last) continue; // a resumed pixel that already has them all
+                            size_t filmPixel = size_t(y - window_.y0) * size_t(window_.width()) + size_t(gx + i - window_.x0);
+                            const PixelSums& p = sums[i];
+                            film.add(filmPixel, p.sum, p.sumSq, last - begin[i]);
+                            if (layers) film.addFirstHit(filmPixel, p.albedo, p.normal, p.depth, p.hits);
+                        }
                     }
                 if (progress) progress->done.fetch_add(last - first, std::memory_order_relaxed);
             }

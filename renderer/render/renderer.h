@@ -57,6 +57,7 @@ private:
                                 const std::vector<uint32_t>* startAt) const;
 
     const Scene& scene_;
+    const Accel& accel_;
     RenderSettings settings_;
     std::vector<ShadingTriangle> triangles_;
     std::vector<CornerTangent> tangents_;
