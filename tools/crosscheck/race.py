@@ -1,0 +1,190 @@
+#!/usr/bin/env python3
+"""Races pt against Mitsuba 3's LLVM path tracer on one lab scene: error against time for both.
+
+Both render the scene at 1, 2, 4, ... samples per pixel, one launch each, on all threads. The time
+is the render alone, without process start, scene load or BVH build for pt (the render time it
+prints), and without scene load or kernel compilation for Mitsuba (each sample count is rendered
+once untimed first, so its kernel is cached). Short renders repeat with other seeds; the table
+takes the median time and the mean error.
+
+The error is the relative MSE, mean over pixels and channels of (x - r)^2 / (r^2 + 0.01), against a
+reference rendered by Mitsuba (cached beside the CSV): any disagreement between the renderers
+counts against pt. Mitsuba gets pt's Russian roulette depth (3) unless --rr-depth says otherwise.
+
+Writes bench/charts/race_NAME.csv and .png (error against seconds, both renderers) and prints
+seconds per sample and the equal-time error ratio. Run it with tools/crosscheck/race, which
+installs Mitsuba into the crosscheck's virtual environment.
+"""
+import argparse
+import csv
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mitsuba_lab  # noqa: E402  (sets Mitsuba's variant)
+from lab_scene import sun_direction  # noqa: E402
+
+mi = mitsuba_lab.mi
+
+
+def relative_mse(x, ref):
+    return float(np.mean((x - ref) ** 2 / (ref * ref + 0.01)))
+
+
+def read_rgb(path):
+    import OpenImageIO as oiio
+    buf = oiio.ImageBuf(path)
+    px = np.asarray(buf.get_pixels(oiio.FLOAT), dtype=np.float64)
+    return px.reshape(buf.spec().height, buf.spec().width, buf.spec().nchannels)[:, :, :3]
+
+
+def write_rgb(path, img):
+    import OpenImageIO as oiio
+    spec = oiio.ImageSpec(img.shape[1], img.shape[0], 3, oiio.FLOAT)
+    out = oiio.ImageOutput.create(path)
+    if not out or not out.open(path, spec) or not out.write_image(img.astype(np.float32)) or not out.close():
+        sys.exit(f"race: cannot write {path}")
+
+
+def render_pt(a, spp, seed, tmp):
+    out = os.path.join(tmp, "pt.exr")
+    cmd = [a.pt, "render", a.scene, "--camera", str(a.camera), "--res", a.res, "-spp", str(spp),
+           "--seed", str(seed), "-o", out] + a.pt_args
+    text = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
+    seconds = float(re.search(r"([0-9.]+) s render", text).group(1))
+    return read_rgb(out), seconds
+
+
+def render_mitsuba(scene, spp, seed):
+    t0 = time.perf_counter()
+    img = np.array(mi.render(scene, spp=spp, seed=seed), dtype=np.float64)[:, :, :3]  # the copy waits for the kernel
+    return img, time.perf_counter() - t0
+
+
+def reference(a, scene, path):
+    if os.path.exists(path):
+        return read_rgb(path)
+    passes = max(1, a.reference_spp // 64)
+    total = None
+    start = time.time()
+    for p in range(passes):
+        img = np.array(mi.render(scene, spp=64, seed=100000 + p), dtype=np.float64)[:, :, :3]
+        total = img if total is None else total + img
+        print(f"\rrace: reference pass {p + 1}/{passes}, {time.time() - start:.0f} s", end="", file=sys.stderr)
+    print(file=sys.stderr)
+    ref = total / passes
+    write_rgb(path, ref)
+    return ref
+
+
+def plot(rows, title, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    for name, style in (("pt", "o-"), ("mitsuba", "s-")):
+        pts = [(r["seconds"], r["rel_mse"]) for r in rows if r["renderer"] == name]
+        label = "pt" if name == "pt" else f"Mitsuba {mi.__version__} LLVM path tracer"
+        ax.loglog([p[0] for p in pts], [p[1] for p in pts], style, label=label, markersize=4)
+    ax.set_title(f"{title}: error against render time")
+    ax.set_xlabel("seconds (2 threads)")
+    ax.set_ylabel("relative MSE vs. Mitsuba reference")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+
+
+def error_at(rows, name, seconds):
+    """Error of `name` at `seconds`, interpolated log-log between its sample counts."""
+    pts = sorted((r["seconds"], r["rel_mse"]) for r in rows if r["renderer"] == name)
+    xs, ys = np.log([p[0] for p in pts]), np.log([p[1] for p in pts])
+    if not (xs[0] <= np.log(seconds) <= xs[-1]):
+        return None
+    return float(np.exp(np.interp(np.log(seconds), xs, ys)))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("scene")
+    ap.add_argument("--name", help="the chart's name [the scene's]")
+    ap.add_argument("--camera", type=int, default=0)
+    ap.add_argument("--res", default="256x256")
+    ap.add_argument("--max-spp", type=int, default=256)
+    ap.add_argument("--reference-spp", type=int, default=4096)
+    ap.add_argument("--rr-depth", type=int, default=3)
+    ap.add_argument("--pt", default="build/pt")
+    ap.add_argument("--out-dir", default="bench/charts")
+    ap.add_argument("--pt-normals", action="store_true", help="as for mitsuba_lab.py (cornellbottle2)")
+    ap.add_argument("--env")
+    ap.add_argument("--env-rotate", type=float, default=0.0)
+    ap.add_argument("--sky", action="store_true")
+    ap.add_argument("--sun-elevation", type=float, default=45.0)
+    ap.add_argument("--sun-azimuth", type=float, default=135.0)
+    ap.add_argument("--turbidity", type=float, default=3.0)
+    a = ap.parse_args()
+    name = a.name or os.path.splitext(os.path.basename(a.scene))[0]
+    width, height = (int(x) for x in a.res.lower().split("x"))
+    a.pt_args = ["-q"]
+    env = sky = None
+    if a.env:
+        env = (a.env, a.env_rotate, 1.0)
+        a.pt_args += ["--env", a.env, "--env-rotate", str(a.env_rotate)]
+    if a.sky:
+        sky = (sun_direction(a.sun_elevation, a.sun_azimuth), a.turbidity, 1.0)
+        a.pt_args += ["--sky", "--sun-elevation", str(a.sun_elevation), "--sun-azimuth", str(a.sun_azimuth),
+                      "--turbidity", str(a.turbidity)]
+    os.makedirs(a.out_dir, exist_ok=True)
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        scene = mitsuba_lab.build_scene(a.scene, a.camera, width, height, 16, a.pt_normals, tmp, a.rr_depth, env, sky)
+        ref = reference(a, scene, os.path.join("build-crosscheck", f"race_{name}_{a.res}_reference.exr"))
+        render_pt(a, 1, 999, tmp)  # warm the file cache
+        spp = 1
+        while spp <= a.max_spp:
+            repeats = max(1, 16 // spp)
+            render_mitsuba(scene, spp, 999)  # compiles (or finds) the kernel for this size
+            for renderer in ("pt", "mitsuba"):
+                errors, seconds = [], []
+                for k in range(repeats):
+                    seed = 1 + k
+                    img, s = render_pt(a, spp, seed, tmp) if renderer == "pt" else render_mitsuba(scene, spp, seed)
+                    errors.append(relative_mse(img, ref))
+                    seconds.append(s)
+                rows.append({"renderer": renderer, "spp": spp, "seconds": float(np.median(seconds)),
+                             "rel_mse": float(np.mean(errors))})
+                print(f"race {name}: {renderer:8s} {spp:5d} spp  {rows[-1]['seconds']:8.3f} s  "
+                      f"relative MSE {rows[-1]['rel_mse']:.4g}", file=sys.stderr)
+            spp *= 2
+
+    csv_path = os.path.join(a.out_dir, f"race_{name}.csv")
+    with open(csv_path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=["renderer", "spp", "seconds", "rel_mse"])
+        w.writeheader()
+        w.writerows(rows)
+    plot(rows, f"{name} ({a.res})", csv_path[:-4] + ".png")
+
+    top = a.max_spp if a.max_spp & (a.max_spp - 1) == 0 else 1 << (a.max_spp.bit_length() - 1)
+    t_pt = next(r["seconds"] for r in rows if r["renderer"] == "pt" and r["spp"] == top)
+    t_mi = next(r["seconds"] for r in rows if r["renderer"] == "mitsuba" and r["spp"] == top)
+    # Equal-time error at the longest time both curves cover.
+    spans = [[r["seconds"] for r in rows if r["renderer"] == n] for n in ("pt", "mitsuba")]
+    t = min(max(s) for s in spans)
+    e_pt, e_mi = error_at(rows, "pt", t), error_at(rows, "mitsuba", t)
+    if e_pt and e_mi:
+        equal = (f"at {t:.2f} s relative MSE pt {e_pt:.4g}, Mitsuba {e_mi:.4g}: "
+                 f"Mitsuba's error / pt's = {e_mi / e_pt:.2f}")
+    else:
+        equal = "the curves do not overlap in time (raise --max-spp)"
+    print(f"{name}: at {top} spp pt {t_pt:.3f} s, Mitsuba {t_mi:.3f} s: pt {t_mi / t_pt:.2f}x faster per sample; "
+          f"{equal}  ({csv_path})")
+
+
+if __name__ == "__main__":
+    main()
