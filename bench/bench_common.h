@@ -54,5 +54,6 @@ int runConverge(int argc, char** argv);
 int runTextureBench(int argc, char** argv); // bench/texture_bench.cpp
 int runSkyBench(int argc, char** argv);     // bench/sky_bench.cpp
 int runLoadBench(int argc, char** argv);    // bench/load_bench.cpp
+int runLeakBench(int argc, char** argv);    // bench/leak_bench.cpp
 
 } // namespace pt::bench

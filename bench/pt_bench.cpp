@@ -308,6 +308,7 @@ int usage(int status) {
                "       pt-bench textures [--rounds R] [--size N]   (cost of a texture lookup)\n"
                "       pt-bench sky [--rounds R]   (the baked sky map against the analytic model)\n"
                "       pt-bench load [--scene PATH | --grid N]   (load and BVH build of 1 M triangles, memory)\n"
+               "       pt-bench leak [--rays N]   (rays slipping through closed meshes, per Embree build option)\n"
                "defaults: cornellbottle2 from ../shared/scenes/lab, 20 frames, 512x512, all threads,\n"
                "          JSON to bench/results/latest.json\n",
                status == 0 ? stdout : stderr);
@@ -323,6 +324,7 @@ int main(int argc, char** argv) {
     if (argc > 1 && !std::strcmp(argv[1], "textures")) return runTextureBench(argc - 1, argv + 1);
     if (argc > 1 && !std::strcmp(argv[1], "sky")) return runSkyBench(argc - 1, argv + 1);
     if (argc > 1 && !std::strcmp(argv[1], "load")) return runLoadBench(argc - 1, argv + 1);
+    if (argc > 1 && !std::strcmp(argv[1], "leak")) return runLeakBench(argc - 1, argv + 1);
     Options o;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
