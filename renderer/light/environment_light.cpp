@@ -32,8 +32,9 @@ Vec3 EnvironmentLight::sample(Vec2 u, Spectrum& radiance, float& pdf) const {
     Vec2 uv = distribution_.sample(u, pdfUv);
     Vec3 d = EnvironmentMap::uvToDirection(uv);
     // d(omega) = sin(theta) d(theta) d(phi) = 2 pi^2 sin(theta) du dv; sin(theta) from the
-    // direction itself, as pdf() computes it, so that both agree at the poles too.
-    float sinTheta = std::hypot(d.x, d.z);
+    // direction itself, as pdf() computes it, so that both agree at the poles too (d is a unit
+    // vector: no overflow for std::hypot to guard against).
+    float sinTheta = std::sqrt(d.x * d.x + d.z * d.z);
     pdf = pdfUv > 0.0f && sinTheta > 0.0f ? pdfUv / (2.0f * kPi * kPi * sinTheta) : 0.0f;
     radiance = map_.lookup(uv);
     return map_.toWorld(d);
@@ -41,7 +42,7 @@ Vec3 EnvironmentLight::sample(Vec2 u, Spectrum& radiance, float& pdf) const {
 
 float EnvironmentLight::pdf(const Vec3& dir) const {
     Vec3 d = map_.toMap(dir);
-    float sinTheta = std::hypot(d.x, d.z);
+    float sinTheta = std::sqrt(d.x * d.x + d.z * d.z);
     if (!(sinTheta > 0.0f)) return 0.0f;
     return distribution_.pdf(EnvironmentMap::directionToUv(d)) / (2.0f * kPi * kPi * sinTheta);
 }

@@ -37,7 +37,14 @@ Spectrum EnvironmentMap::lookup(Vec2 uv) const {
     float fx = std::floor(x), fy = std::floor(y);
     float tx = x - fx, ty = y - fy;
     int x0 = int(fx), y0 = int(fy);
-    auto wrapX = [&](int i) { return ((i % width) + width) % width; };
+    // uv in [0, 1] puts the columns in [-1, width]: wrapped by compares there, sparing the
+    // escaping path two integer divisions per column.
+    auto wrapX = [&](int i) {
+        if (i >= 0 && i < width) return i;
+        if (i == -1) return width - 1;
+        if (i == width) return 0;
+        return ((i % width) + width) % width;
+    };
     auto clampY = [&](int j) { return std::clamp(j, 0, height - 1); };
     int xa = wrapX(x0), xb = wrapX(x0 + 1), ya = clampY(y0), yb = clampY(y0 + 1);
     return (1.0f - ty) * ((1.0f - tx) * texel(xa, ya) + tx * texel(xb, ya)) +
