@@ -4,12 +4,18 @@
 Both render the scene at 1, 2, 4, ... samples per pixel, one launch each, on all threads. The time
 is the render alone, without process start, scene load or BVH build for pt (the render time it
 prints), and without scene load or kernel compilation for Mitsuba (each sample count is rendered
-once untimed first, so its kernel is cached). Short renders repeat with other seeds; the table
-takes the median time and the mean error.
+once untimed first, so its kernel is cached). Each sample count is rendered with several seeds,
+--budget samples per pixel in all (at least 2 renders); the curve takes the median time and the
+mean error, since a single render's error is dominated by its few brightest outliers.
 
 The error is the relative MSE, mean over pixels and channels of (x - r)^2 / (r^2 + 0.01), against a
-reference rendered by Mitsuba (cached beside the CSV): any disagreement between the renderers
-counts against pt. Mitsuba gets pt's Russian roulette depth (3) unless --rr-depth says otherwise.
+reference rendered by Mitsuba (cached in build-crosscheck/): any disagreement between the
+renderers counts against pt. Mitsuba gets pt's Russian roulette depth (3) unless --rr-depth says
+otherwise.
+
+For unbiased renderers error falls as 1 / time, so error x seconds is one number per renderer:
+its mean over the sample counts from 8 spp on gives the equal-time error ratio, steadier than
+reading two noisy curves at one time.
 
 Writes bench/charts/race_NAME.csv and .png (error against seconds, both renderers) and prints
 seconds per sample and the equal-time error ratio. Run it with tools/crosscheck/race, which
@@ -101,15 +107,6 @@ def plot(rows, title, path):
     fig.savefig(path, dpi=90)
 
 
-def error_at(rows, name, seconds):
-    """Error of `name` at `seconds`, interpolated log-log between its sample counts."""
-    pts = sorted((r["seconds"], r["rel_mse"]) for r in rows if r["renderer"] == name)
-    xs, ys = np.log([p[0] for p in pts]), np.log([p[1] for p in pts])
-    if not (xs[0] <= np.log(seconds) <= xs[-1]):
-        return None
-    return float(np.exp(np.interp(np.log(seconds), xs, ys)))
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("scene")
@@ -119,6 +116,8 @@ def main():
     ap.add_argument("--max-spp", type=int, default=256)
     ap.add_argument("--reference-spp", type=int, default=4096)
     ap.add_argument("--rr-depth", type=int, default=3)
+    ap.add_argument("--summary", action="store_true", help="print the figures and redraw the chart from the CSV")
+    ap.add_argument("--budget", type=int, default=256, help="samples per pixel rendered at each sample count [256]")
     ap.add_argument("--pt", default="build/pt")
     ap.add_argument("--out-dir", default="bench/charts")
     ap.add_argument("--pt-normals", action="store_true", help="as for mitsuba_lab.py (cornellbottle2)")
@@ -141,49 +140,54 @@ def main():
         a.pt_args += ["--sky", "--sun-elevation", str(a.sun_elevation), "--sun-azimuth", str(a.sun_azimuth),
                       "--turbidity", str(a.turbidity)]
     os.makedirs(a.out_dir, exist_ok=True)
-    rows = []
-    with tempfile.TemporaryDirectory() as tmp:
-        scene = mitsuba_lab.build_scene(a.scene, a.camera, width, height, 16, a.pt_normals, tmp, a.rr_depth, env, sky)
-        ref = reference(a, scene, os.path.join("build-crosscheck", f"race_{name}_{a.res}_reference.exr"))
-        render_pt(a, 1, 999, tmp)  # warm the file cache
-        spp = 1
-        while spp <= a.max_spp:
-            repeats = max(1, 16 // spp)
-            render_mitsuba(scene, spp, 999)  # compiles (or finds) the kernel for this size
-            for renderer in ("pt", "mitsuba"):
-                errors, seconds = [], []
-                for k in range(repeats):
-                    seed = 1 + k
-                    img, s = render_pt(a, spp, seed, tmp) if renderer == "pt" else render_mitsuba(scene, spp, seed)
-                    errors.append(relative_mse(img, ref))
-                    seconds.append(s)
-                rows.append({"renderer": renderer, "spp": spp, "seconds": float(np.median(seconds)),
-                             "rel_mse": float(np.mean(errors))})
-                print(f"race {name}: {renderer:8s} {spp:5d} spp  {rows[-1]['seconds']:8.3f} s  "
-                      f"relative MSE {rows[-1]['rel_mse']:.4g}", file=sys.stderr)
-            spp *= 2
-
     csv_path = os.path.join(a.out_dir, f"race_{name}.csv")
-    with open(csv_path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=["renderer", "spp", "seconds", "rel_mse"])
-        w.writeheader()
-        w.writerows(rows)
+    if a.summary:  # the figures and chart again from the CSV, nothing rendered
+        with open(csv_path) as f:
+            rows = [{"renderer": r["renderer"], "spp": int(r["spp"]), "seconds": float(r["seconds"]),
+                     "rel_mse": float(r["rel_mse"])} for r in csv.DictReader(f)]
+    else:
+        rows = []
+        with tempfile.TemporaryDirectory() as tmp:
+            scene = mitsuba_lab.build_scene(a.scene, a.camera, width, height, 16, a.pt_normals, tmp, a.rr_depth, env, sky)
+            ref = reference(a, scene, os.path.join("build-crosscheck", f"race_{name}_{a.res}_reference.exr"))
+            render_pt(a, 1, 999, tmp)  # warm the file cache
+            spp = 1
+            while spp <= a.max_spp:
+                repeats = max(2, a.budget // spp)
+                render_mitsuba(scene, spp, 999)  # compiles (or finds) the kernel for this size
+                for renderer in ("pt", "mitsuba"):
+                    errors, seconds = [], []
+                    for k in range(repeats):
+                        seed = 1 + k
+                        img, s = render_pt(a, spp, seed, tmp) if renderer == "pt" else render_mitsuba(scene, spp, seed)
+                        errors.append(relative_mse(img, ref))
+                        seconds.append(s)
+                    rows.append({"renderer": renderer, "spp": spp, "seconds": float(np.median(seconds)),
+                                 "rel_mse": float(np.mean(errors))})
+                    print(f"race {name}: {renderer:8s} {spp:5d} spp  {rows[-1]['seconds']:8.3f} s  "
+                          f"relative MSE {rows[-1]['rel_mse']:.4g}", file=sys.stderr)
+                spp *= 2
+
+        with open(csv_path, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=["renderer", "spp", "seconds", "rel_mse"])
+            w.writeheader()
+            w.writerows(rows)
     plot(rows, f"{name} ({a.res})", csv_path[:-4] + ".png")
 
     top = a.max_spp if a.max_spp & (a.max_spp - 1) == 0 else 1 << (a.max_spp.bit_length() - 1)
     t_pt = next(r["seconds"] for r in rows if r["renderer"] == "pt" and r["spp"] == top)
     t_mi = next(r["seconds"] for r in rows if r["renderer"] == "mitsuba" and r["spp"] == top)
-    # Equal-time error at the longest time both curves cover.
-    spans = [[r["seconds"] for r in rows if r["renderer"] == n] for n in ("pt", "mitsuba")]
-    t = min(max(s) for s in spans)
-    e_pt, e_mi = error_at(rows, "pt", t), error_at(rows, "mitsuba", t)
-    if e_pt and e_mi:
-        equal = (f"at {t:.2f} s relative MSE pt {e_pt:.4g}, Mitsuba {e_mi:.4g}: "
-                 f"Mitsuba's error / pt's = {e_mi / e_pt:.2f}")
-    else:
-        equal = "the curves do not overlap in time (raise --max-spp)"
+    # Error x time, averaged from 8 spp on: the equal-time error of each renderer, up to a constant.
+    def work(n):
+        return float(np.mean([r["rel_mse"] * r["seconds"] for r in rows if r["renderer"] == n and r["spp"] >= 8]))
+    w_pt, w_mi = work("pt"), work("mitsuba")
+    # Error at equal sample counts: what the samples themselves are worth.
+    err = {(r["renderer"], r["spp"]): r["rel_mse"] for r in rows}
+    per_sample = np.mean([err[("mitsuba", n)] / err[("pt", n)] for (who, n) in err if who == "pt" and n >= 16])
     print(f"{name}: at {top} spp pt {t_pt:.3f} s, Mitsuba {t_mi:.3f} s: pt {t_mi / t_pt:.2f}x faster per sample; "
-          f"{equal}  ({csv_path})")
+          f"at equal spp (16 on) Mitsuba's error is {per_sample:.2f}x pt's; "
+          f"error x seconds pt {w_pt:.4g}, Mitsuba {w_mi:.4g}: at equal time Mitsuba's error is {w_mi / w_pt:.2f}x pt's"
+          f"  ({csv_path})")
 
 
 if __name__ == "__main__":
