@@ -99,7 +99,8 @@ Spectrum PathTracer::trace(const Ray& cameraRay, const Hit& cameraHit, Sampler& 
             // The shading and the geometric normal must agree on the side wi leaves from, or the
             // shadow ray would start on the wrong side of the surface.
             if (ls.pdf > 0.0f && glm::dot(ls.wi, sp.ng) * wiLocal.z > 0.0f) {
-                Spectrum f = bsdf.eval(woLocal, wiLocal);
+                float bsdfPdf; // for MIS; evaluated with f in one pass rather than again below
+                Spectrum f = bsdf.evalPdf(woLocal, wiLocal, bsdfPdf);
                 if (!isBlack(f) && !isBlack(ls.radiance)) {
                     ++counts.shadow;
                     bool blocked;
@@ -116,7 +117,7 @@ Spectrum PathTracer::trace(const Ray& cameraRay, const Hit& cameraHit, Sampler& 
                     }
                     if (!blocked) {
                         float w = (ls.delta || !weighHits) ? 1.0f
-                                                           : powerHeuristic(pmf * ls.pdf, bsdf.pdf(woLocal, wiLocal));
+                                                           : powerHeuristic(pmf * ls.pdf, bsdfPdf);
                         L += beta * f * ls.radiance * (w / (pmf * ls.pdf));
                     }
                 }
