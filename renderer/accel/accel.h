@@ -1,5 +1,6 @@
-// Ray queries against the scene: Embree 3 for the triangles, an exact analytic test for the few
-// sphere lights. This is the only module that includes Embree's headers.
+// Ray queries against the scene: Embree 3 for the triangles, and an exact analytic test for the
+// sphere lights, inside the BVH as a user geometry when there are many. This is the only module
+// that includes Embree's headers.
 #pragma once
 
 #include "scene/scene.h"
@@ -33,6 +34,7 @@ struct RayRecord {
     float tfar;
     Vec3 dir;
     Kind kind;
+    int skipLight = -1; // shadow rays: the sphere light they are aimed at
 };
 
 // How Embree builds the BVH. The defaults are chosen by pt-bench's comparison of all of them on
@@ -74,9 +76,10 @@ public:
     size_t traceBare(const RayRecord* rays, size_t count, Replay mode = Replay::AsTraced) const;
 
 private:
-    // The sphere lights are tested analytically after Embree's query.
-    void addSphereHits(const Ray& ray, float tfar, Hit& hit) const;
-    uint32_t sceneTriangle(unsigned geomID, unsigned primID) const;
+    // The Hit of Embree's answer: scene triangle or sphere light.
+    Hit hitOf(unsigned geomID, unsigned primID, float t, float u, float v) const;
+    // Sphere lights not in the BVH (a few of them) are tested after Embree's query.
+    void addLoopedSphereHits(const Ray& ray, float tfar, Hit& hit) const;
 
     std::vector<RayRecord>* log_ = nullptr;
     struct Impl;
