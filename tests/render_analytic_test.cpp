@@ -134,6 +134,39 @@ INSTANTIATE_TEST_SUITE_P(Modes, SphereLightOnPlane,
                          ::testing::Values(LightSampling::Mis, LightSampling::Nee, LightSampling::Bsdf),
                          [](const ::testing::TestParamInfo<LightSampling>& info) { return modeName(info.param); });
 
+// Twelve sphere lights on a ring above the plane: more than Accel tests one by one, so they are
+// in the BVH, and the light tree chooses among them. Each still gives I cos / d^2 at the point
+// below the ring's centre, and the sum must come out whichever strategy finds them.
+class ManySphereLightsOnPlane : public ::testing::TestWithParam<LightSampling> {};
+
+TEST_P(ManySphereLightsOnPlane, MatchTheSumOfTheirIrradiances) {
+    Scene scene = emptyScene(lookAt({4, 1, 0}, {0, 0, 0}, {0, 1, 0}, 1));
+    Material m;
+    m.kd = Spectrum(0.5f, 0.6f, 0.7f);
+    uint32_t mat = addMaterial(scene, m);
+    addQuad(scene, {-10, 0, 10}, {10, 0, 10}, {10, 0, -10}, {-10, 0, -10}, mat);
+    Spectrum irradiance(0.0f);
+    for (int k = 0; k < 12; ++k) {
+        SphereLight light;
+        float phi = 2.0f * kPi * float(k) / 12.0f;
+        light.center = Vec3(1.5f * std::cos(phi), 2.0f, 1.5f * std::sin(phi));
+        light.radius = 0.3f;
+        light.intensity = Spectrum(0.3f + 0.1f * float(k % 3), 0.5f, 0.8f - 0.05f * float(k));
+        scene.lights.push_back(light);
+        float d2 = glm::dot(light.center, light.center);
+        irradiance += light.intensity * (light.center.y / std::sqrt(d2)) / d2;
+    }
+    RenderSettings s;
+    s.lightSampling = GetParam();
+    s.maxDepth = 1;
+    Rendered r = render(scene, 16, 16, GetParam() == LightSampling::Bsdf ? 1024 : 64, s);
+    expectNear(regionStats(r, 6, 6, 10, 10), m.kd * irradiance * kInvPi, 5.0f, 2e-3f, "twelve sphere lights");
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, ManySphereLightsOnPlane,
+                         ::testing::Values(LightSampling::Mis, LightSampling::Nee, LightSampling::Bsdf),
+                         [](const ::testing::TestParamInfo<LightSampling>& info) { return modeName(info.param); });
+
 // Camera and BSDF rays that hit a sphere light see its radiance I / (pi r^2), and it reflects
 // nothing.
 TEST(Analytic, SphereLightSeenDirectly) {
