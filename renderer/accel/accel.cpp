@@ -245,6 +245,17 @@ static void fillRay(RTCRay& r, const Ray& ray, float tfar) {
     r.flags = 0;
 }
 
+// Lane `i` of a packet of 8 rays, with no hit yet.
+static void fillPacketLane(RTCRayHit8& packet, int i, const Vec3& origin, const Vec3& dir, float tfar) {
+    RTCRay8& p = packet.ray;
+    p.org_x[i] = origin.x, p.org_y[i] = origin.y, p.org_z[i] = origin.z;
+    p.dir_x[i] = dir.x, p.dir_y[i] = dir.y, p.dir_z[i] = dir.z;
+    p.tnear[i] = 0.0f, p.tfar[i] = tfar, p.time[i] = 0.0f;
+    p.mask[i] = 0xFFFFFFFFu, p.id[i] = 0, p.flags[i] = 0;
+    packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    packet.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
+}
+
 Hit Accel::hitOf(unsigned geomID, unsigned primID, float t, float u, float v) const {
     Hit hit;
     if (geomID == RTC_INVALID_GEOMETRY_ID) return hit;
@@ -298,13 +309,7 @@ void Accel::intersectCameraRays(const Ray* rays, const bool* active, int count, 
         valid[i] = i < count && active[i] ? -1 : 0;
         // Inactive lanes still get finite values: Embree may compute on them before masking.
         const Ray& r = valid[i] ? rays[i] : rays[0];
-        RTCRay8& p = packet.ray;
-        p.org_x[i] = r.origin.x, p.org_y[i] = r.origin.y, p.org_z[i] = r.origin.z;
-        p.dir_x[i] = r.dir.x, p.dir_y[i] = r.dir.y, p.dir_z[i] = r.dir.z;
-        p.tnear[i] = 0.0f, p.tfar[i] = kInf, p.time[i] = 0.0f;
-        p.mask[i] = 0xFFFFFFFFu, p.id[i] = 0, p.flags[i] = 0;
-        packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
-        packet.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
+        fillPacketLane(packet, i, r.origin, r.dir, kInf);
         if (valid[i] && log_) log_->push_back({r.origin, kInf, r.dir, RayRecord::Kind::Camera});
     }
     RTCIntersectContext context;
@@ -369,12 +374,7 @@ size_t Accel::traceBare(const RayRecord* rays, size_t count, Replay mode) const 
             rtcOccluded1(impl_->scene, &context, &ray);
             hits += ray.tfar < 0.0f;
         } else if (r.kind == RayRecord::Kind::Camera && mode != Replay::OneByOne) {
-            RTCRay8& p = packet.ray;
-            p.org_x[lanes] = r.origin.x, p.org_y[lanes] = r.origin.y, p.org_z[lanes] = r.origin.z;
-            p.dir_x[lanes] = r.dir.x, p.dir_y[lanes] = r.dir.y, p.dir_z[lanes] = r.dir.z;
-            p.tnear[lanes] = 0.0f, p.tfar[lanes] = r.tfar, p.time[lanes] = 0.0f;
-            p.mask[lanes] = 0xFFFFFFFFu, p.id[lanes] = 0, p.flags[lanes] = 0;
-            packet.hit.geomID[lanes] = RTC_INVALID_GEOMETRY_ID;
+            fillPacketLane(packet, lanes, r.origin, r.dir, r.tfar);
             valid[lanes++] = -1;
             if (lanes == kPacket) flushPacket();
         } else {

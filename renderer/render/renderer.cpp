@@ -79,11 +79,14 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
                 for (int y = y0; y < y1; ++y)
                     for (int gx = x0; gx < x1; gx += kPacket) {
                         const int lanes = std::min(kPacket, x1 - gx);
+                        // The sampler keys a pixel by its place in the full image, the film by its place in the window.
+                        auto filmPixel = [&](int i) {
+                            return size_t(y - window_.y0) * size_t(window_.width()) + size_t(gx + i - window_.x0);
+                        };
                         PixelSums sums[kPacket];
                         uint32_t begin[kPacket], groupBegin = last;
                         for (int i = 0; i < lanes; ++i) {
-                            size_t filmPixel = size_t(y - window_.y0) * size_t(window_.width()) + size_t(gx + i - window_.x0);
-                            begin[i] = startAt ? std::max(first, (*startAt)[filmPixel]) : first;
+                            begin[i] = startAt ? std::max(first, (*startAt)[filmPixel(i)]) : first;
                             groupBegin = std::min(groupBegin, begin[i]);
                         }
                         for (uint32_t s = groupBegin; s < last; ++s) {
@@ -92,7 +95,6 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
                             for (int i = 0; i < lanes; ++i) {
                                 if (s < begin[i]) continue;
                                 active[i] = true;
-                                // The sampler keys a pixel by its place in the full image.
                                 samplers[i].startPixelSample(uint32_t(y) * uint32_t(width_) + uint32_t(gx + i), s, settings_.seed);
                                 Vec2 jitter = samplers[i].get2D(); // box filter: uniform inside the pixel
                                 rays[i] = camera_.generate(float(gx + i) + jitter.x, float(y) + jitter.y);
@@ -107,10 +109,9 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
                         }
                         for (int i = 0; i < lanes; ++i) {
                             if (begin[i] >= last) continue; // a resumed pixel that already has them all
-                            size_t filmPixel = size_t(y - window_.y0) * size_t(window_.width()) + size_t(gx + i - window_.x0);
                             const PixelSums& p = sums[i];
-                            film.add(filmPixel, p.sum, p.sumSq, last - begin[i]);
-                            if (layers) film.addFirstHit(filmPixel, p.albedo, p.normal, p.depth, p.hits);
+                            film.add(filmPixel(i), p.sum, p.sumSq, last - begin[i]);
+                            if (layers) film.addFirstHit(filmPixel(i), p.albedo, p.normal, p.depth, p.hits);
                         }
                     }
                 if (progress) progress->done.fetch_add(last - first, std::memory_order_relaxed);
