@@ -105,29 +105,43 @@ TEST(Analytic, PointLightOnPlane) {
             for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.pixel(x, y)[c], expected[c], 2e-4f * expected[c]);
 }
 
+// The plane y = 0 of reflectance kPlaneKd, seen obliquely from (4, 1, 0) with the origin in the
+// centre pixels, for lights placed above it: lights there do not hide the origin from the camera.
+const Spectrum kPlaneKd(0.5f, 0.6f, 0.7f);
+
+Scene obliquePlane() {
+    Scene scene = emptyScene(lookAt({4, 1, 0}, {0, 0, 0}, {0, 1, 0}, 1));
+    Material m;
+    m.kd = kPlaneKd;
+    uint32_t mat = addMaterial(scene, m);
+    addQuad(scene, {-10, 0, 10}, {10, 0, 10}, {10, 0, -10}, {-10, 0, -10}, mat);
+    return scene;
+}
+
+// Direct light only, found by `mode`, in the centre region of a 16x16 render (more samples for
+// BSDF sampling, which finds small lights by chance).
+RegionStats directLightAtOrigin(const Scene& scene, LightSampling mode) {
+    RenderSettings s;
+    s.lightSampling = mode;
+    s.maxDepth = 1;
+    Rendered r = render(scene, 16, 16, mode == LightSampling::Bsdf ? 1024 : 64, s);
+    return regionStats(r, 6, 6, 10, 10);
+}
+
 // The lab's sphere light: radiance I / (pi r^2) on its surface gives irradiance I / d^2 at a
-// facing point at distance d from the centre, as a point light would. Seen obliquely so that
-// the sphere does not hide the point; every direct-light strategy must agree.
+// facing point at distance d from the centre, as a point light would. Every direct-light
+// strategy must agree.
 class SphereLightOnPlane : public ::testing::TestWithParam<LightSampling> {};
 
 TEST_P(SphereLightOnPlane, MatchesPointLightIrradiance) {
-    Scene scene = emptyScene(lookAt({4, 1, 0}, {0, 0, 0}, {0, 1, 0}, 1));
-    Material m;
-    m.kd = Spectrum(0.5f, 0.6f, 0.7f);
-    uint32_t mat = addMaterial(scene, m);
-    addQuad(scene, {-10, 0, 10}, {10, 0, 10}, {10, 0, -10}, {-10, 0, -10}, mat);
+    Scene scene = obliquePlane();
     SphereLight light;
     light.center = Vec3(0, 2, 0);
     light.radius = 0.5f;
     light.intensity = Spectrum(3.0f, 2.0f, 1.0f);
     scene.lights.push_back(light);
-
-    RenderSettings s;
-    s.lightSampling = GetParam();
-    s.maxDepth = 1;
-    Rendered r = render(scene, 16, 16, GetParam() == LightSampling::Bsdf ? 1024 : 64, s);
-    Spectrum expected = m.kd * light.intensity / (kPi * 4.0f);
-    expectNear(regionStats(r, 6, 6, 10, 10), expected, 5.0f, 2e-3f, "sphere light");
+    Spectrum expected = kPlaneKd * light.intensity / (kPi * 4.0f);
+    expectNear(directLightAtOrigin(scene, GetParam()), expected, 5.0f, 2e-3f, "sphere light");
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, SphereLightOnPlane,
@@ -140,11 +154,7 @@ INSTANTIATE_TEST_SUITE_P(Modes, SphereLightOnPlane,
 class ManySphereLightsOnPlane : public ::testing::TestWithParam<LightSampling> {};
 
 TEST_P(ManySphereLightsOnPlane, MatchTheSumOfTheirIrradiances) {
-    Scene scene = emptyScene(lookAt({4, 1, 0}, {0, 0, 0}, {0, 1, 0}, 1));
-    Material m;
-    m.kd = Spectrum(0.5f, 0.6f, 0.7f);
-    uint32_t mat = addMaterial(scene, m);
-    addQuad(scene, {-10, 0, 10}, {10, 0, 10}, {10, 0, -10}, {-10, 0, -10}, mat);
+    Scene scene = obliquePlane();
     Spectrum irradiance(0.0f);
     for (int k = 0; k < 12; ++k) {
         SphereLight light;
@@ -156,11 +166,8 @@ TEST_P(ManySphereLightsOnPlane, MatchTheSumOfTheirIrradiances) {
         float d2 = glm::dot(light.center, light.center);
         irradiance += light.intensity * (light.center.y / std::sqrt(d2)) / d2;
     }
-    RenderSettings s;
-    s.lightSampling = GetParam();
-    s.maxDepth = 1;
-    Rendered r = render(scene, 16, 16, GetParam() == LightSampling::Bsdf ? 1024 : 64, s);
-    expectNear(regionStats(r, 6, 6, 10, 10), m.kd * irradiance * kInvPi, 5.0f, 2e-3f, "twelve sphere lights");
+    expectNear(directLightAtOrigin(scene, GetParam()), kPlaneKd * irradiance * kInvPi, 5.0f, 2e-3f,
+               "twelve sphere lights");
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, ManySphereLightsOnPlane,
