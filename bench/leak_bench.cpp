@@ -1,10 +1,12 @@
 // pt-bench leak: what Embree's robust mode buys and costs (issue 15). Rays start inside closed,
-// watertight meshes (shared vertices, no cracks) in random directions; every one must hit the
+// watertight meshes (a subdivided icosahedron: neighbouring triangles share their corners'
+// coordinates exactly, so there are no cracks) in random directions; every one must hit the
 // mesh, so a miss is a ray that slipped between two triangles. Counted for each build option, on
 // meshes at the unit scale, tiny, huge, and far from the origin, with the time the rays took.
 #include "accel/accel.h"
 #include "bench/bench_common.h"
 #include "sampling/rng.h"
+#include "tests/scene_builders.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -13,44 +15,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <map>
 #include <string>
 #include <vector>
 
 namespace pt::bench {
 namespace {
-
-// An icosahedron subdivided `levels` times onto the unit sphere: 20 * 4^levels triangles that
-// share their vertices, so the mesh is closed and has no cracks.
-Scene icosphere(int levels) {
-    Scene s;
-    const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    s.positions = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                   {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    for (Vec3& p : s.positions) p = glm::normalize(p);
-    s.triPositions = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                      {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-                      {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
-    for (int l = 0; l < levels; ++l) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoints;
-        auto mid = [&](uint32_t a, uint32_t b) {
-            auto key = std::minmax(a, b);
-            auto it = midpoints.find(key);
-            if (it != midpoints.end()) return it->second;
-            s.positions.push_back(glm::normalize(s.positions[a] + s.positions[b]));
-            return midpoints[key] = uint32_t(s.positions.size() - 1);
-        };
-        std::vector<glm::uvec3> finer;
-        for (const glm::uvec3& f : s.triPositions) {
-            uint32_t ab = mid(f.x, f.y), bc = mid(f.y, f.z), ca = mid(f.z, f.x);
-            finer.insert(finer.end(), {{f.x, ab, ca}, {f.y, bc, ab}, {f.z, ca, bc}, {ab, bc, ca}});
-        }
-        s.triPositions = std::move(finer);
-    }
-    s.triMaterial.assign(s.triPositions.size(), 0);
-    s.materials.emplace_back();
-    return s;
-}
 
 struct Trial {
     const char* name;
@@ -75,9 +44,14 @@ int runLeakBench(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "-h") || !std::strcmp(argv[i], "--help")) return usage(0);
         else return usage(2);
     }
-    const Scene unit = icosphere(levels);
+    // A subdivided icosahedron of 20 * 4^levels triangles, at each trial's place and size.
+    auto sphereAt = [&](Vec3 center, float radius) {
+        Scene s;
+        test::addIcosphere(s, center, radius, levels, test::addMaterial(s, Material{}));
+        return s;
+    };
     std::printf("pt-bench leak: icosphere of %zu triangles, %lld rays from inside per mesh and option\n",
-                unit.triangleCount(), rays);
+                size_t(20) << (2 * levels), rays);
     const Trial trials[] = {{"unit sphere at the origin", 1.0f, Vec3(0.0f)},
                             {"radius 1e-3", 1e-3f, Vec3(0.0f)},
                             {"radius 1e4", 1e4f, Vec3(0.0f)},
@@ -91,8 +65,7 @@ int runLeakBench(int argc, char** argv) {
                               {"medium", {AccelOptions::Quality::Medium, false, false}},
                               {"low", {AccelOptions::Quality::Low, false, false}}};
     for (const Trial& trial : trials) {
-        Scene scene = unit;
-        for (Vec3& p : scene.positions) p = trial.offset + trial.scale * p;
+        Scene scene = sphereAt(trial.offset, trial.scale);
         std::printf("\n  %s\n", trial.name);
         for (const Option& option : options) {
             Accel accel(scene, 0, option.options);

@@ -4,22 +4,13 @@
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
+#include "tests/scene_builders.h"
 
 #include <string>
 #include <vector>
 
 namespace pt::test {
 
-uint32_t addMaterial(Scene& scene, const Material& m);
-void addTriangle(Scene& scene, Vec3 a, Vec3 b, Vec3 c, uint32_t material);
-// Corners counter-clockwise seen from the side the normal faces.
-void addQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material);
-// Subdivided icosahedron with flat faces (no vertex normals), normals facing out or in; with
-// `smooth`, vertex normals along the radius (facing out, or in with `inward`).
-void addIcosphere(Scene& scene, Vec3 center, float radius, int subdivisions, uint32_t material,
-                  bool inward = false, bool smooth = false);
-// An axis-aligned box of six quads, normals facing out.
-void addBox(Scene& scene, Vec3 lo, Vec3 hi, uint32_t material);
 // A pinhole camera at `from` looking at `to`, vertical field of view `fov` degrees (up +y unless given).
 Camera lookAt(Vec3 from, Vec3 to, Vec3 up, float fov);
 Camera lookAt(Vec3 from, Vec3 to, float fov);

@@ -1,0 +1,20 @@
+// Meshes built in code: triangles, quads, boxes and subdivided icosahedra added to a Scene. For
+// the tests and for pt-bench (leak), so nothing here uses GoogleTest.
+#pragma once
+
+#include "scene/scene.h"
+
+namespace pt::test {
+
+uint32_t addMaterial(Scene& scene, const Material& m);
+void addTriangle(Scene& scene, Vec3 a, Vec3 b, Vec3 c, uint32_t material);
+// Corners counter-clockwise seen from the side the normal faces.
+void addQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material);
+// Subdivided icosahedron with flat faces (no vertex normals), normals facing out or in; with
+// `smooth`, vertex normals along the radius (facing out, or in with `inward`).
+void addIcosphere(Scene& scene, Vec3 center, float radius, int subdivisions, uint32_t material,
+                  bool inward = false, bool smooth = false);
+// An axis-aligned box of six quads, normals facing out.
+void addBox(Scene& scene, Vec3 lo, Vec3 hi, uint32_t material);
+
+} // namespace pt::test
