@@ -34,6 +34,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mitsuba_lab  # noqa: E402  (sets Mitsuba's variant)
+from exr import RGB, read_channels, write_channels  # noqa: E402
 from lab_scene import sun_direction  # noqa: E402
 
 mi = mitsuba_lab.mi
@@ -43,28 +44,13 @@ def relative_mse(x, ref):
     return float(np.mean((x - ref) ** 2 / (ref * ref + 0.01)))
 
 
-def read_rgb(path):
-    import OpenImageIO as oiio
-    buf = oiio.ImageBuf(path)
-    px = np.asarray(buf.get_pixels(oiio.FLOAT), dtype=np.float64)
-    return px.reshape(buf.spec().height, buf.spec().width, buf.spec().nchannels)[:, :, :3]
-
-
-def write_rgb(path, img):
-    import OpenImageIO as oiio
-    spec = oiio.ImageSpec(img.shape[1], img.shape[0], 3, oiio.FLOAT)
-    out = oiio.ImageOutput.create(path)
-    if not out or not out.open(path, spec) or not out.write_image(img.astype(np.float32)) or not out.close():
-        sys.exit(f"race: cannot write {path}")
-
-
 def render_pt(a, spp, seed, tmp):
     out = os.path.join(tmp, "pt.exr")
     cmd = [a.pt, "render", a.scene, "--camera", str(a.camera), "--res", a.res, "-spp", str(spp),
            "--seed", str(seed), "-o", out] + a.pt_args
     text = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
     seconds = float(re.search(r"([0-9.]+) s render", text).group(1))
-    return read_rgb(out), seconds
+    return read_channels(out, RGB), seconds
 
 
 def render_mitsuba(scene, spp, seed):
@@ -75,7 +61,7 @@ def render_mitsuba(scene, spp, seed):
 
 def reference(a, scene, path):
     if os.path.exists(path):
-        return read_rgb(path)
+        return read_channels(path, RGB)
     passes = max(1, a.reference_spp // 64)
     total = None
     start = time.time()
@@ -85,7 +71,7 @@ def reference(a, scene, path):
         print(f"\rrace: reference pass {p + 1}/{passes}, {time.time() - start:.0f} s", end="", file=sys.stderr)
     print(file=sys.stderr)
     ref = total / passes
-    write_rgb(path, ref)
+    write_channels(path, ref, RGB)
     return ref
 
 
