@@ -120,7 +120,6 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
         }
         out.wi = i * s.sign;
         out.radianceScale = scale;
-        out.lobeProbability = chooseMirror ? pMirror : pRefract;
         out.delta = false;
         // The weight of the whole mixture, f / pdf over every non-delta lobe: lower variance than
         // the chosen lobe's own ratio (its weight times G1(wi, m) times the radiance scaling), and
@@ -134,7 +133,6 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
         out.wi = Vec3(-wo.x, -wo.y, wo.z);
         out.weight = mirror / pMirror;
         out.pdf = 0.0f;
-        out.lobeProbability = pMirror;
         out.delta = true;
         return true;
     }
@@ -152,7 +150,6 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
             out.weight = refract / pRefract;
         }
         out.pdf = 0.0f;
-        out.lobeProbability = pRefract;
         out.delta = true;
         return true;
     }
@@ -168,7 +165,6 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
     if (wi.z == 0.0f) return false;
     wi.z *= side;
     out.wi = wi;
-    out.lobeProbability = pDiffuse;
     out.delta = false;
     Spectrum f = evalPdf(wo, wi, out.pdf);
     if (rough()) { // other non-delta lobes overlap the diffuse one: weigh the whole mixture

@@ -38,14 +38,13 @@ namespace pt {
 
 enum class HemisphereSampling { Cosine, Uniform };
 
-// A sampled direction. The solid-angle density and the probability of the lobe that produced it
-// are kept apart: once glossy and delta lobes mix in one material, a delta lobe's "pdf" is only a
-// selection probability, and using it as a density (in MIS) would be wrong.
+// A sampled direction. A delta lobe's sample has pdf 0 and carries its selection probability in
+// its weight only: once glossy and delta lobes mix in one material, that probability is not a
+// density, and using it as one (in MIS) would be wrong.
 struct BsdfSample {
     Vec3 wi;
     Spectrum weight; // f * |cos theta_i| / pdf, or the lobe weight over its probability for delta lobes
     float pdf = 0.0f; // solid-angle density of wi over all non-delta lobes, lobe choice included; 0 for delta
-    float lobeProbability = 0.0f; // probability that the sampled lobe was chosen
     bool delta = false;
     float radianceScale = 1.0f; // (eta_o / eta_i)^2 included in weight when the path refracted
 };

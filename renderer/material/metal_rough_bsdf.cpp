@@ -65,17 +65,14 @@ bool MetalRoughBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) 
             out.wi = Vec3(-wo.x, -wo.y, wo.z);
             out.weight = lobe / pSpecular;
             out.pdf = 0.0f;
-            out.lobeProbability = pSpecular;
             out.delta = true;
             out.radianceScale = 1.0f;
             return true;
         }
         Vec3 m = sampleVisibleNormal(wo, alpha, u2);
         out.wi = 2.0f * glm::dot(wo, m) * m - wo;
-        out.lobeProbability = pSpecular;
     } else {
         out.wi = squareToCosineHemisphere(u2);
-        out.lobeProbability = pDiffuse;
     }
     if (out.wi.z <= 0.0f) return false;
     float pdf;

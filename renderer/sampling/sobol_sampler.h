@@ -87,7 +87,10 @@ class SobolSampler {
 public:
     // Stratification pays on the first bounces; deeper dimensions come from an independent
     // stream, which costs a tenth as much per value.
-    static constexpr uint32_t kSobolDimensions = 12; // the camera pair and two full vertices
+    // Dimensions count calls (get1D or get2D, a pair is one) and skips: the camera's pair, then
+    // five per vertex (light choice, point on the light, lobe, direction, roulette). 12 covers
+    // the camera, two whole vertices and the third vertex's light choice.
+    static constexpr uint32_t kSobolDimensions = 12;
 
     void startPixelSample(uint32_t pixelIndex, uint32_t sampleIndex, uint64_t seed) {
         pixelSeed_ = uint32_t(hashCombine(seed ^ 0x5bd1e995ULL, pixelIndex));

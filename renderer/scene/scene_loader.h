@@ -8,7 +8,7 @@
 
 namespace pt {
 
-// Loads a scene by its extension (.obj). Afterwards the scene has at least one camera: if the
+// Loads a scene by its extension: .obj (with its MTL files), .gltf or .glb. Afterwards the scene has at least one camera: if the
 // file defines none, one framing the whole scene is added and a warning says so.
 Scene loadScene(const std::string& path, Warnings& warnings);
 
