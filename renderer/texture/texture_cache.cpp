@@ -126,7 +126,12 @@ void TextureCache::lookup(const TextureMap& map, Vec2 uv, const Footprint& fp, i
     opt.anisotropic = 16;
     uv = uv * map.scale + map.offset;
     if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = Vec2(0.0f);
+    // OpenImageIO scales uv to texels in int: a coordinate of 1e10 overflows there. Far from the
+    // unit square a repeating texture is taken back into it (where float still has a fraction).
+    if (!map.clamp && (std::abs(uv.x) > 1e6f || std::abs(uv.y) > 1e6f)) uv -= glm::floor(uv);
     Vec2 dx = fp.dx * map.scale, dy = fp.dy * map.scale;
+    if (!(std::isfinite(dx.x) && std::isfinite(dx.y) && std::isfinite(dy.x) && std::isfinite(dy.y)))
+        dx = dy = Vec2(0.0f); // a bilinear lookup instead
     // OIIO's t runs down from the top row; OBJ's v runs up from the bottom.
     OIIO::TextureSystem* ts = impl_->system;
     bool ok = ts->texture(impl_->handles[size_t(map.texture)], ts->get_perthread_info(), opt, uv.x, 1.0f - uv.y, dx.x,
