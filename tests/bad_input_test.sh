@@ -305,24 +305,24 @@ check gltf_used_only 0 'uses the extension KHR_materials_sheen, which pt ignores
 check gltf_bad_stride 1 'byteStride 4 is below the element size 12' render bad_stride.gltf -o out/a.exr
 check gltf_view_past_buffer 1 'pass the end of buffer 0' render view_past_buffer.gltf -o out/a.exr
 check gltf_bad_alpha_mode 1 'alphaMode "CUTOUT"; expected OPAQUE, MASK or BLEND' render bad_alpha_mode.gltf -o out/a.exr
-check gltf_bad_roughness 1 'material 0 "White": roughnessFactor 2 is outside [0, 1]' render bad_roughness.gltf -o out/a.exr
+check gltf_bad_roughness 1 'material 0 "White": pbrMetallicRoughness.roughnessFactor 2.0 must be a number in [0, 1]' render bad_roughness.gltf -o out/a.exr
 check gltf_bad_spot 1 'spot cone angles must satisfy 0 <= inner < outer <= pi/2' render bad_spot.gltf -o out/a.exr
 check gltf_bad_light_type 1 'type "area"; expected point, spot or directional' render bad_light_type.gltf -o out/a.exr
-check gltf_bad_camera 1 'bad_camera.gltf: Invalid camera type: "fisheye"' render bad_camera.gltf -o out/a.exr
-check gltf_bad_transmission 1 'material 0 "White" KHR_materials_transmission: transmissionFactor must be a number in [0, 1]' render bad_transmission.gltf -o out/a.exr
-check gltf_bad_specular_color 1 'KHR_materials_specular: specularColorFactor must hold numbers in [0, 1e+06]' render bad_specular_color.gltf -o out/a.exr
-check gltf_bad_specular 1 'KHR_materials_specular: specularFactor must be a number in [0, 1]' render bad_specular.gltf -o out/a.exr
+check gltf_bad_camera 1 'bad_camera.gltf: camera 0 "Down": type "fisheye"; expected perspective or orthographic' render bad_camera.gltf -o out/a.exr
+check gltf_bad_transmission 1 'material 0 "White": extensions.KHR_materials_transmission.transmissionFactor 2 must be a number in [0, 1]' render bad_transmission.gltf -o out/a.exr
+check gltf_bad_specular_color 1 'extensions.KHR_materials_specular.specularColorFactor must be an array of 3 numbers of at least 0, found -1 in it' render bad_specular_color.gltf -o out/a.exr
+check gltf_bad_specular 1 'extensions.KHR_materials_specular.specularFactor must be a number, found "high"' render bad_specular.gltf -o out/a.exr
 check gltf_thin_walled 0 'without KHR_materials_volume the surface is thin-walled' render thin_walled.gltf -spp 1 --res 8x8 -o out/a.exr
 check gltf_lines 0 '1 point or line primitives skipped' render lines.gltf -spp 1 --res 8x8 -o out/a.exr
 check gltf_missing_bin 1 'bin_and_image.bin' render lonely/bin_and_image.gltf -o out/a.exr
-check gltf_missing_image 1 'baseColorTexture: image 0 (no_image/checker.png) was not found or is empty' render no_image/bin_and_image.gltf -o out/a.exr
+check gltf_missing_image 1 'material 0 "Checker" baseColorTexture: image 0: texture "no_image/checker.png" not found' render no_image/bin_and_image.gltf -o out/a.exr
 check gltf_truncated 1 'truncated.glb' render truncated.glb -o out/a.exr
 check gltf_bad_chunk 1 'bad_chunk.glb' render bad_chunk.glb -o out/a.exr
 check gltf_not_json 1 'not_json.gltf' render not_json.gltf -o out/a.exr
 check gltf_tiny 1 'tiny.glb' render tiny.glb -o out/a.exr
 mkdir -p folder.gltf
 check gltf_folder 1 'folder.gltf: not a regular file' render folder.gltf -o out/a.exr
-check gltf_missing 1 'nowhere.glb: cannot open: no such file' render nowhere.glb -o out/a.exr
+check gltf_missing 1 'nowhere.glb: cannot open: No such file or directory' render nowhere.glb -o out/a.exr
 
 # The sky (--sky): each bad value is a usage error naming the option, nothing written.
 check light_choice 2 'option --light-choice: expected auto, power or tree, got "bvh"' render m.obj --light-choice bvh -o out/a.exr

@@ -124,6 +124,13 @@ const tinygltf::Accessor& accessorAt(const tinygltf::Model& model, int index, co
 
 } // namespace
 
+std::vector<unsigned char> bufferViewBytes(const tinygltf::Model& model, int view, const std::string& what) {
+    size_t length = view >= 0 && size_t(view) < model.bufferViews.size() ? model.bufferViews[size_t(view)].byteLength : 0;
+    size_t stride;
+    const uint8_t* p = locate(model, view, 0, 1, length, false, stride, what);
+    return std::vector<unsigned char>(p, p + length);
+}
+
 std::string accessorName(int accessor, const std::string& what) {
     return what + ", accessor " + std::to_string(accessor);
 }
@@ -139,17 +146,20 @@ std::vector<float> readFloats(const tinygltf::Model& model, int index, int compo
         throw LoadError(name + ": component type " + componentTypeName(a.componentType) + " is not allowed here");
     size_t size = componentSize(a.componentType), elementSize = size * size_t(components);
     std::vector<float> out;
-    out.resize(a.count * size_t(components)); // bounded: checked against the buffer below, or sparse
     if (a.bufferView >= 0) {
         size_t stride;
         const uint8_t* p = locate(model, a.bufferView, a.byteOffset, a.count, elementSize, true, stride, name);
+        out.resize(a.count * size_t(components)); // bounded now: the elements lie in the buffer
         for (size_t i = 0; i < a.count; ++i)
             for (int c = 0; c < components; ++c)
                 out[i * size_t(components) + size_t(c)] = component(p + i * stride + size_t(c) * size, a.componentType, a.normalized);
     } else if (!a.sparse.isSparse) {
         throw LoadError(name + ": has neither a bufferView nor sparse values");
-    } else if (a.count > (size_t(1) << 28)) {
-        throw LoadError(name + ": a count of " + std::to_string(a.count) + " with no buffer behind it");
+    } else if (a.count > (size_t(1) << 24)) {
+        // Zeros with a few sparse values: bytes the file does not hold, so bounded apart.
+        throw LoadError(name + ": a count of " + std::to_string(a.count) + " with no buffer behind it (at most 2^24)");
+    } else {
+        out.resize(a.count * size_t(components)); // zeros under the sparse values
     }
     if (a.sparse.isSparse) {
         const auto& s = a.sparse;
@@ -171,6 +181,9 @@ std::vector<float> readFloats(const tinygltf::Model& model, int index, int compo
             if (target >= a.count)
                 throw LoadError(name + ": sparse index " + std::to_string(target) + " is past the count " +
                                 std::to_string(a.count));
+            if (k > 0 && target <= unsignedComponent(ip + (k - 1) * indexStride, indexType))
+                throw LoadError(name + ": sparse index " + std::to_string(k) + " is " + std::to_string(target) +
+                                ", not above the one before it (they must strictly increase)");
             for (int c = 0; c < components; ++c)
                 out[size_t(target) * size_t(components) + size_t(c)] =
                     component(vp + k * valueStride + size_t(c) * size, a.componentType, a.normalized);
@@ -193,8 +206,10 @@ std::vector<uint32_t> readIndices(const tinygltf::Model& model, int index, size_
         throw LoadError(name + ": indices of type " + componentTypeName(t) + "; expected an unsigned integer type");
     if (a.sparse.isSparse) throw LoadError(name + ": sparse index accessors are not supported");
     if (a.bufferView < 0) throw LoadError(name + ": indices need a bufferView");
+    if (size_t(a.bufferView) < model.bufferViews.size() && model.bufferViews[size_t(a.bufferView)].byteStride != 0)
+        throw LoadError(name + ": bufferView " + std::to_string(a.bufferView) + " of indices has a byteStride; index views are packed");
     size_t stride;
-    const uint8_t* p = locate(model, a.bufferView, a.byteOffset, a.count, componentSize(t), true, stride, name);
+    const uint8_t* p = locate(model, a.bufferView, a.byteOffset, a.count, componentSize(t), false, stride, name);
     std::vector<uint32_t> out(a.count);
     for (size_t i = 0; i < a.count; ++i) {
         out[i] = unsignedComponent(p + i * stride, t);

@@ -26,6 +26,9 @@ std::vector<float> readFloats(const tinygltf::Model& model, int accessor, int co
 std::vector<uint32_t> readIndices(const tinygltf::Model& model, int accessor, size_t vertexCount,
                                   const std::string& what);
 
+// The bytes of buffer view `view` (an image's), checked against its buffer.
+std::vector<unsigned char> bufferViewBytes(const tinygltf::Model& model, int view, const std::string& what);
+
 // "scene.gltf: mesh 2 primitive 0 POSITION, accessor 3", for messages.
 std::string accessorName(int accessor, const std::string& what);
 

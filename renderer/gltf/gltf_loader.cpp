@@ -1,8 +1,11 @@
 #include "gltf/gltf_loader.h"
 
 #include "gltf/gltf_accessors.h"
+#include "gltf/gltf_document.h"
+#include "io/input_file.h"
 #include "core/system.h"
 #include "scene/scene_limits.h"
+#include "core/math.h"
 #include "scene/text_parser.h"
 #include "texture/texture_io.h"
 
@@ -11,10 +14,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <map>
+#include <sys/stat.h>
 
 namespace pt {
 namespace {
@@ -30,16 +33,71 @@ constexpr double kLumensPerWatt = 683.0;
 
 using tinygltf::Model;
 
-// Images are not decoded by tinygltf (its stb build is not ours): the loader callback keeps their
-// bytes, and OpenImageIO decodes the ones a material uses.
+// Images are not decoded by tinygltf (its stb build is not ours): the loader callback keeps the
+// bytes of data-URI images, and the loader reads the others itself, from their buffer views or
+// files, and has OpenImageIO decode the ones a material uses. A buffer-view image's bytes are not
+// touched here: tinygltf passes a pointer it has not checked.
 bool keepImageBytes(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
                     const unsigned char* bytes, int size, void* user) {
     auto* kept = static_cast<std::vector<std::vector<unsigned char>>*>(user);
+    if (image->bufferView >= 0) return true;
     if (index < 0 || size < 0 || index > (1 << 24)) return false;
     if (size_t(index) >= kept->size()) kept->resize(size_t(index) + 1);
     (*kept)[size_t(index)].assign(bytes, bytes + size);
     image->as_is = true;
     return true;
+}
+
+// A URI's path as tinygltf decodes it (%XX escapes, and '+' as a space), so that the loader finds
+// an image where tinygltf finds a buffer of the same name.
+std::string decodeUri(const std::string& uri) {
+    auto hex = [](char c) { return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : 0; };
+    std::string path;
+    for (size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '+') path += ' ';
+        else if (uri[i] == '%' && i + 2 < uri.size()) path += char(hex(uri[i + 1]) << 4 | hex(uri[i + 2])), i += 2;
+        else path += uri[i];
+    }
+    return path;
+}
+
+// tinygltf reads a buffer's file through these callbacks: only a regular file, only beside the
+// .gltf (tinygltf would also look in the working directory), and only of a size some buffer
+// declares (byteLength, which tinygltf then checks). Image files are refused here, which tinygltf
+// takes as a warning: the loader reads the images a material uses itself, header first.
+struct ExternalFiles {
+    std::string folder;                  // the .gltf's folder, as tinygltf joins it to a URI
+    std::vector<uint64_t> bufferLengths; // byteLength of each buffer held in a file
+    uint64_t bytesLeft;                  // what all of them may still take (many buffers may name one file)
+};
+
+bool externalFileExists(const std::string& path, void* user) {
+    const auto& files = *static_cast<const ExternalFiles*>(user);
+    struct stat st {};
+    std::string prefix = files.folder.back() == '/' ? files.folder : files.folder + "/";
+    return path.rfind(prefix, 0) == 0 && stat(path.c_str(), &st) == 0;
+}
+
+std::string pathAsGiven(const std::string& path, void*) { return path; } // no ~ or $VAR expansion
+
+bool readExternalFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+    auto& files = *static_cast<ExternalFiles*>(user);
+    struct stat st {};
+    if (stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
+        std::find(files.bufferLengths.begin(), files.bufferLengths.end(), uint64_t(st.st_size)) == files.bufferLengths.end()) {
+        if (err) *err += "its " + std::to_string(st.st_size) + " bytes are no buffer's byteLength";
+        return false;
+    }
+    uint64_t largest = files.bufferLengths.empty() ? 0 : *std::max_element(files.bufferLengths.begin(), files.bufferLengths.end());
+    std::string error = readRegularFile(path, std::min(largest, files.bytesLeft), *out);
+    if (!error.empty() && err) *err += error + (largest > files.bytesLeft ? " (its buffers together may take half this machine's memory)" : "");
+    files.bytesLeft -= std::min<uint64_t>(files.bytesLeft, out->size());
+    return error.empty();
+}
+
+bool writeNothing(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "pt writes no glTF files";
+    return false;
 }
 
 glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& what) {
@@ -67,6 +125,12 @@ glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& what) {
         m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
     }
     return m;
+}
+
+// v / |v| in double, or 0 for a zero vector.
+glm::dvec3 unitOrZero(const glm::dvec3& v) {
+    double length = glm::length(v);
+    return length > 0.0 && std::isfinite(length) ? v / length : glm::dvec3(0.0);
 }
 
 Spectrum colorOf(const std::vector<double>& v, Spectrum fallback) {
@@ -109,6 +173,7 @@ public:
     void read() {
         materialOf_.assign(model_.materials.size(), ~0u);
         uvSet_.assign(model_.materials.size(), 0);
+        readsTextures_.assign(model_.materials.size(), 0);
         if (model_.scenes.empty()) {
             // No scene: every root node, as viewers do.
             std::vector<char> child(model_.nodes.size(), 0);
@@ -194,6 +259,9 @@ private:
         uint32_t material = materialFor(prim.material, what, colorAccessor >= 0);
         const std::string uvName = "TEXCOORD_" + std::to_string(uvSetOf(prim.material));
         if (int a = attribute(prim, uvName.c_str()); a >= 0) uvs = gltf::readFloats(model_, a, 2, {F, B, UB, S, US}, what + " " + uvName);
+        else if (readsTextures(prim.material))
+            throw LoadError(what + ": its material " + std::to_string(prim.material) + " reads textures through " + uvName +
+                            ", which the primitive does not have");
         if (colorAccessor >= 0) {
             // VEC3 or VEC4 (its alpha is not used); float or normalized unsigned integers.
             bool rgba = size_t(colorAccessor) < model_.accessors.size() &&
@@ -204,6 +272,15 @@ private:
                 for (size_t i = 0; i < count; ++i) std::copy_n(&colors[4 * i], 3, &colors[3 * i]);
                 colors.resize(3 * count);
             }
+            // A multiplier of the base colour: bounded as the MTL's Kd is.
+            float peak = colors.empty() ? 0.0f : *std::max_element(colors.begin(), colors.end());
+            float least = colors.empty() ? 0.0f : *std::min_element(colors.begin(), colors.end());
+            if (least < 0.0f || peak > kMaxReflectance)
+                throw LoadError(what + " COLOR_0: a component is " + shortNumber(least < 0.0f ? least : peak) +
+                                "; vertex colours multiply the base colour and must lie in [0, 10]");
+            if (peak > 1.0f)
+                warnOnce(warnedBrightColors_, what + " COLOR_0: components above 1 (up to " + shortNumber(peak) +
+                                                  ") make the surface reflect more light than it receives");
         }
         if ((!normals.empty() && normals.size() != p.size()) || (!uvs.empty() && uvs.size() / 2 != n) ||
             (!colors.empty() && colors.size() != p.size()) || (!tangents.empty() && tangents.size() != 4 * n))
@@ -227,6 +304,12 @@ private:
         }
         if (scene_.triPositions.size() + tris.size() > kMaxTriangles)
             throw LoadError(what + ": the scene passes " + std::to_string(kMaxTriangles) + " triangles");
+        // Nodes may instance a mesh any number of times: a small file can ask for more triangles
+        // than memory holds, which must be refused here rather than by Embree running out.
+        double bytes = double(scene_.triPositions.size() + tris.size()) * kBytesPerTriangle;
+        if (bytes > 0.5 * physicalMemoryBytes())
+            throw LoadError(what + ": with it the scene has " + std::to_string(scene_.triPositions.size() + tris.size()) +
+                            " triangles, about " + shortNumber(bytes / 1e9) + " GB to render, more than half this machine's memory");
 
         // Positions to world space; normals by the inverse transpose. A mirroring transform turns
         // the winding around, so each triangle is turned back to keep it counter-clockwise.
@@ -245,8 +328,9 @@ private:
         if (!normals.empty()) {
             normalBase = int(scene_.normals.size());
             for (size_t i = 0; i < n; ++i) {
+                // Normalized in double: a normal of (3e38, 3e38, 0) has no float length.
                 glm::dvec3 m = normalMatrix * glm::dvec3(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
-                scene_.normals.push_back(safeNormalize(Vec3(float(m.x), float(m.y), float(m.z))));
+                scene_.normals.push_back(Vec3(unitOrZero(m)));
             }
             if (!anyNormals_) scene_.triNormals.assign(scene_.triPositions.size(), glm::ivec3(-1));
             anyNormals_ = true;
@@ -268,7 +352,10 @@ private:
                 }
                 glm::dvec3 t = linear * glm::dvec3(tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2]);
                 float w = tangents[4 * i + 3] < 0.0f ? -1.0f : 1.0f;
-                Vec3 unit = safeNormalize(Vec3(float(t.x), float(t.y), float(t.z)));
+                if (tangents[4 * i + 3] != 1.0f && tangents[4 * i + 3] != -1.0f)
+                    warnOnce(warnedTangentSign_, what + " TANGENT: w is " + shortNumber(tangents[4 * i + 3]) +
+                                                     " at vertex " + std::to_string(i) + ", not +1 or -1; taken by its sign (0 as +1)");
+                Vec3 unit = Vec3(unitOrZero(t));
                 scene_.vertexTangents.emplace_back(unit, unit == Vec3(0.0f) ? 0.0f : (mirrored ? -w : w));
             }
         }
@@ -298,22 +385,28 @@ private:
         auto key = std::make_pair(image, colour);
         if (auto it = decoded_.find(key); it != decoded_.end()) return it->second;
         const tinygltf::Image& img = model_.images[size_t(image)];
-        std::string name = img.uri.empty() || img.uri.rfind("data:", 0) == 0
-                               ? path_ + " image " + std::to_string(image)
-                               : (std::filesystem::path(path_).parent_path() / img.uri).string();
+        bool inFile = img.bufferView < 0 && img.uri.rfind("data:", 0) != 0;
+        std::string name = inFile ? (std::filesystem::path(path_).parent_path() / decodeUri(img.uri)).string()
+                                  : path_ + " image " + std::to_string(image);
         std::string format = img.mimeType == "image/jpeg" ? ".jpg" : img.mimeType == "image/png" ? ".png" : "";
         if (format.empty()) {
             std::string ext = std::filesystem::path(img.uri).extension().string();
             format = ext.empty() ? ".png" : ext;
         }
-        if (size_t(image) >= images_.size() || images_[size_t(image)].empty())
-            throw LoadError(what + ": image " + std::to_string(image) + " (" + name + ") was not found or is empty");
         Texture t;
         std::string error;
-        bool tooLarge;
-        if (!readTextureFromMemory(images_[size_t(image)], name, format, colour, t, error,
-                                   textureMemoryBudget() - scene_.textures->bytes(), tooLarge))
-            throw LoadError(what + ": " + error);
+        bool tooLarge, read;
+        double budget = textureMemoryBudget() - scene_.textures->bytes();
+        if (size_t(image) < images_.size() && !images_[size_t(image)].empty()) // bytes tinygltf decoded (a data URI)
+            read = readTextureFromMemory(images_[size_t(image)], name, format, colour, t, error, budget, tooLarge);
+        else if (img.bufferView >= 0)
+            read = readTextureFromMemory(gltf::bufferViewBytes(model_, img.bufferView, what + ", image " + std::to_string(image)),
+                                         name, format, colour, t, error, budget, tooLarge);
+        else if (inFile)
+            read = readTexture(name, colour, t, error, budget, tooLarge); // the header first, then the texels
+        else
+            throw LoadError(what + ": image " + std::to_string(image) + " has no data");
+        if (!read) throw LoadError(what + ": image " + std::to_string(image) + ": " + error);
         int cached = scene_.textures->add(std::move(t));
         decoded_[key] = cached;
         return cached;
@@ -394,6 +487,8 @@ private:
 
     // The texture coordinate set (0 or 1) that material `index`'s textures read.
     int uvSetOf(int index) const { return index >= 0 && size_t(index) < uvSet_.size() ? uvSet_[size_t(index)] : 0; }
+    // Whether material `index` has a texture (and so needs that set).
+    bool readsTextures(int index) const { return index >= 0 && size_t(index) < uvSet_.size() && readsTextures_[size_t(index)]; }
 
     uint32_t plainMaterialFor(int index, const std::string& where) {
         if (index < 0) {
@@ -476,6 +571,9 @@ private:
             m.normalMap = textureMap(g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions, false,
                                      what + " normalTexture");
             m.normalMap.bumpScale = float(g.normalTexture.scale);
+            if (!(std::abs(g.normalTexture.scale) <= kMaxNormalScale))
+                throw LoadError(what + ": normalTexture.scale " + shortNumber(g.normalTexture.scale) + " is beyond +-1e6, "
+                                "where the perturbed normal's length overflows float");
         }
         float strength = 1.0f;
         if (auto e = g.extensions.find("KHR_materials_emissive_strength");
@@ -509,6 +607,7 @@ private:
             throw LoadError(what + ": alphaMode \"" + mode + "\"; expected OPAQUE, MASK or BLEND");
         }
         uvSet_[size_t(index)] = std::max(0, materialUvSet_);
+        readsTextures_[size_t(index)] = materialUvSet_ >= 0;
         materialOf_[size_t(index)] = uint32_t(scene_.materials.size());
         scene_.materials.push_back(m);
         return materialOf_[size_t(index)];
@@ -564,12 +663,15 @@ private:
             return;
         }
         SphereLight l;
-        l.name = g.name.empty() ? "light " + std::to_string(index) : g.name;
+        l.name = "light " + std::to_string(index) + (g.name.empty() ? "" : " " + g.name);
         l.center = Vec3(at);
         l.radius = 0.0f;
         l.intensity = color * float(g.intensity / kLumensPerWatt); // candela to W/sr
         l.range = float(g.range);
-        l.source = what + ": ";
+        if (g.range > 0.0 && !(l.range > 0.0f && std::isfinite(l.range)))
+            throw LoadError(what + ": range " + shortNumber(g.range) + " is beyond float's range");
+        l.source = path_ + ": ";
+        l.intensityKeyword = "intensity";
         if (g.type == "spot") {
             double inner = g.spot.innerConeAngle, outer = g.spot.outerConeAngle;
             if (!(inner >= 0.0 && inner < outer && outer <= M_PI / 2))
@@ -578,6 +680,10 @@ private:
             l.spotDirection = Vec3(glm::normalize(ahead));
             l.cosInner = float(std::cos(inner));
             l.cosOuter = float(std::cos(outer));
+            // In float the cone must still be a cone: a narrower one is a point light in disguise.
+            if (!(l.cosOuter < l.cosInner))
+                throw LoadError(what + ": spot cone angles " + shortNumber(inner) + " and " + shortNumber(outer) +
+                                " have the same cosine in float; make the outer cone wider");
         } else if (g.type != "point") {
             throw LoadError(what + ": type \"" + g.type + "\"; expected point, spot or directional");
         }
@@ -592,13 +698,15 @@ private:
     std::vector<uint32_t> materialOf_;
     std::map<uint32_t, uint32_t> withColors_; // a material's copy for primitives with COLOR_0
     std::vector<int> uvSet_;                   // per glTF material, the TEXCOORD set its textures read
+    std::vector<char> readsTextures_;          // per glTF material, whether it has any texture
     int materialUvSet_ = -1;                   // while a material is read: its textures' set so far
     uint32_t defaultMaterial_ = ~0u;
     std::vector<char> visited_;
     std::map<std::pair<int, bool>, int> decoded_;
     int constant_ = -1;
     size_t skippedPrimitives_ = 0;
-    bool warnedColor_ = false, warnedMirror_ = false, warnedTexCoord_ = false;
+    bool warnedColor_ = false, warnedMirror_ = false, warnedTexCoord_ = false, warnedBrightColors_ = false,
+         warnedTangentSign_ = false;
     bool warnedMixedSets_ = false, warnedSpecularTexture_ = false, warnedTransmissionTexture_ = false, warnedThinWalled_ = false,
          warnedAttenuation_ = false;
     void warnOnce(bool& warned, const std::string& message) {
@@ -615,30 +723,32 @@ bool gltfExtensionSupported(const std::string& name) {
 }
 
 Scene loadGltf(const std::string& path, Warnings& warnings) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw LoadError(path + ": " + (std::filesystem::exists(path, ec) ? "not a regular file" : "cannot open: no such file"));
-    auto size = std::filesystem::file_size(path, ec);
-    if (!ec && double(size) > 0.5 * physicalMemoryBytes())
-        throw LoadError(path + ": " + std::to_string(size) + " bytes, more than half this machine's memory");
-    std::ifstream in(path, std::ios::binary);
-    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (!in.good() && !in.eof()) throw LoadError(path + ": cannot read the file");
-    bool binary = toLower(std::filesystem::path(path).extension().string()) == ".glb";
+    std::vector<unsigned char> bytes;
+    // A glTF file's own length fields are 32-bit: a .glb cannot pass 4 GB.
+    uint64_t limit = std::min<uint64_t>(uint64_t(0.5 * physicalMemoryBytes()), 0xffffffffu);
+    if (std::string error = readRegularFile(path, limit, bytes); !error.empty()) throw LoadError(path + ": " + error);
+    // A .glb by its magic, not its name: a binary file saved as .gltf loads as well.
+    bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     return loadGltfFromMemory(path, bytes, binary, warnings);
 }
 
 Scene loadGltfFromMemory(const std::string& path, const std::vector<unsigned char>& bytes, bool binary,
                          Warnings& warnings) {
+    if (bytes.size() > 0xffffffffu) throw LoadError(path + ": larger than the 4 GB a glTF file can address");
+    gltf::DocumentFacts facts = gltf::checkGltfDocument(gltf::gltfJson(bytes, binary, path), binary, path);
+    for (uint64_t length : facts.fileBufferLengths)
+        if (double(length) > 0.5 * physicalMemoryBytes())
+            throw LoadError(path + ": a buffer of " + std::to_string(length) + " bytes is more than half this machine's memory");
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
     std::vector<std::vector<unsigned char>> images;
     loader.SetImageLoader(keepImageBytes, &images);
-    std::string err, warn;
     std::string base = std::filesystem::path(path).parent_path().string();
     if (base.empty()) base = ".";
+    ExternalFiles files{base, facts.fileBufferLengths, uint64_t(0.5 * physicalMemoryBytes())};
+    loader.SetFsCallbacks(tinygltf::FsCallbacks{externalFileExists, pathAsGiven, readExternalFile, writeNothing, &files});
+    std::string err, warn;
     bool ok = false;
-    if (bytes.size() > 0xffffffffu) throw LoadError(path + ": larger than the 4 GB a glTF file can address");
     try {
         ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), base)
                     : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
@@ -662,7 +772,7 @@ Scene loadGltfFromMemory(const std::string& path, const std::vector<unsigned cha
     scene.sources.push_back(path);
     for (const tinygltf::Buffer& b : model.buffers)
         if (!b.uri.empty() && b.uri.rfind("data:", 0) != 0)
-            scene.sources.push_back((std::filesystem::path(path).parent_path() / b.uri).string());
+            scene.sources.push_back((std::filesystem::path(path).parent_path() / decodeUri(b.uri)).string());
     GltfReader(path, model, images, scene, warnings).read();
     return scene;
 }

@@ -37,6 +37,7 @@ struct SphereLight {
     Spectrum intensity{1.0f}; // lightintensity * lightcolor
     std::string source;       // "file:line: " of its lightintensity (or newlight), for messages
     std::string radiusSource; // same for lightradius
+    const char* intensityKeyword = "lightintensity"; // what the file calls its intensity, for messages
     // glTF's KHR_lights_punctual on a point light: a spot cone (cosOuter < 1) with the
     // extension's smooth falloff from cosInner to cosOuter, and a range beyond which it is dark.
     Vec3 spotDirection{0.0f, 0.0f, -1.0f};

@@ -28,5 +28,20 @@ inline constexpr float kPointLightDistanceFraction = 0.1f;
 inline constexpr float kMinLightRadiusFraction = 1e-12f;
 // Most triangles: Embree's primitive IDs and pt's triangle indices are 32-bit.
 inline constexpr unsigned long long kMaxTriangles = 1ull << 31;
+// Memory a triangle takes from load to render, scene arrays, BVH and shading records together
+// (pt-bench load measured 302 bytes at the peak for a million). A glTF file can instance a mesh
+// without bound, so its triangles are checked against half of the machine's memory with it.
+inline constexpr double kBytesPerTriangle = 320.0;
+// Narrowest field of view, in degrees: below it, at 512 pixels across, a float ray direction no
+// longer tells neighbouring pixels apart.
+inline constexpr float kMinFieldOfView = 0.01f;
+// An orthographic camera's half-height must be at least this fraction of its distance from the
+// origin, for the same reason (its ray origins step by 2 h / 512 in float coordinates).
+inline constexpr float kMinOrthoFraction = 1e-4f;
+// Widest aspect ratio a glTF camera may ask for: an image side is at most 65536 pixels.
+inline constexpr float kMaxAspect = 65536.0f;
+// Largest |scale| of a normal map (glTF normalTexture.scale): the perturbed normal (s x, s y, z)
+// is squared when normalized, which overflows float beyond about 1e19.
+inline constexpr double kMaxNormalScale = 1e6;
 
 } // namespace pt

@@ -6,6 +6,7 @@
 #include "scene/scene_limits.h"
 #include "scene/text_parser.h"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace pt {
@@ -45,6 +46,36 @@ static Camera frameScene(const Scene& scene) {
     return c;
 }
 
+static bool withinCoordinates(const Vec3& p) {
+    return std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate && std::abs(p.z) <= kMaxCoordinate;
+}
+
+// A camera as PinholeCamera will use it, in float: each format checks its own fields, but a
+// value that passes in the file's precision can still collapse here (an up vector parallel to
+// the view to 1e-45, a position at 1e19) and make rays Embree refuses.
+static void checkCamera(const Scene& scene, const Camera& c) {
+    std::string what = scene.path + ": camera \"" + c.name + "\": ";
+    if (!withinCoordinates(c.position) || !withinCoordinates(c.target))
+        throw LoadError(what + "its position or target lies beyond 1e12, the largest coordinate pt renders correctly");
+    Vec3 forward = safeNormalize(c.target - c.position);
+    if (forward == Vec3(0.0f)) throw LoadError(what + "it looks nowhere (its target is its position)");
+    if (!(safeLength(glm::cross(forward, safeNormalize(c.up))) > 1e-6f))
+        throw LoadError(what + "its up direction is zero or parallel to its view direction");
+    if (c.orthoHalfHeight > 0.0f) {
+        float distance = std::max({std::abs(c.position.x), std::abs(c.position.y), std::abs(c.position.z)});
+        float least = std::max(kMinSceneSize, kMinOrthoFraction * distance);
+        if (!(c.orthoHalfHeight >= least && c.orthoHalfHeight <= kMaxCoordinate))
+            throw LoadError(what + "its orthographic half-height " + shortNumber(c.orthoHalfHeight) + " is outside [" +
+                            shortNumber(least) + ", 1e12]: below, neighbouring pixels' rays start at one float point "
+                            "(1e-4 of its distance from the origin, and at least 1e-6)");
+    } else if (!(c.fovY >= kMinFieldOfView && c.fovY < 180.0f)) {
+        throw LoadError(what + "its field of view " + shortNumber(c.fovY) + " degrees is outside [0.01, 180), where "
+                        "neighbouring pixels' ray directions differ in float");
+    }
+    if (c.aspect != 0.0f && !(c.aspect >= 1.0f / kMaxAspect && c.aspect <= kMaxAspect))
+        throw LoadError(what + "its aspect ratio " + shortNumber(c.aspect) + " is outside [1/65536, 65536]");
+}
+
 // The limits of scene/scene_limits.h that depend on the size of the whole scene.
 static void checkSceneLimits(const Scene& scene) {
     Vec3 lo, hi;
@@ -63,12 +94,22 @@ static void checkSceneLimits(const Scene& scene) {
         all_hi = glm::max(all_hi, c.position);
     }
     float size = all_lo.x <= all_hi.x ? safeLength(all_hi - all_lo) : 0.0f;
+    for (const Camera& c : scene.cameras) checkCamera(scene, c);
+    for (const DirectionalLight& d : scene.directionalLights)
+        if (!(maxComponent(d.irradiance) <= kMaxRadiance))
+            throw LoadError(scene.path + ": directional light \"" + d.name + "\": irradiance " +
+                            shortNumber(maxComponent(d.irradiance)) + " is beyond 1e18, where samples overflow float");
     for (const SphereLight& l : scene.lights) {
+        if (!withinCoordinates(l.center))
+            throw LoadError(l.source + "light \"" + l.name + "\": it lies beyond 1e12, the largest coordinate pt renders correctly");
+        if (l.range > 0.0f && l.range < kMinLightRadiusFraction * size)
+            throw LoadError(l.source + "light \"" + l.name + "\": range " + shortNumber(l.range) + " is below 1e-12 of the "
+                            "scene's size (" + shortNumber(size) + "); it would light nothing");
         float peak = maxComponent(l.intensity);
         if (l.isPoint()) {
             double limit = double(kMaxRadiance) * sqr(kPointLightDistanceFraction * std::max(size, kMinSceneSize));
             if (peak > limit)
-                throw LoadError(l.source + "light \"" + l.name + "\": lightintensity " + shortNumber(peak) +
+                throw LoadError(l.source + "light \"" + l.name + "\": " + l.intensityKeyword + " " + shortNumber(peak) +
                                 " of a point light in a scene " + shortNumber(size) + " across is beyond " +
                                 shortNumber(limit) + " (1e18 x (size/10)^2), where samples overflow float");
         } else if (l.radius < kMinLightRadiusFraction * size) {

@@ -1,0 +1,18 @@
+// Reading an input file whole, after checking what it is: a FIFO would block the open or the
+// read, /dev/zero never ends, a folder has no bytes, and a sparse file can declare gigabytes of
+// zeros. Only a regular file no larger than the caller's limit is read; the check comes first,
+// on the open descriptor, so nothing is allocated for what is refused.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pt {
+
+// Reads the regular file at `path` into `bytes`. Returns "" or why not, without the path:
+// "cannot open: No such file or directory", "not a regular file (a folder, device or pipe)",
+// "12884901888 bytes, more than the 4294967296 it may have".
+std::string readRegularFile(const std::string& path, uint64_t maxBytes, std::vector<unsigned char>& bytes);
+
+} // namespace pt
