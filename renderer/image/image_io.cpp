@@ -1,5 +1,7 @@
 #include "image/image_io.h"
 
+#include "image/image_input.h"
+
 #include "core/color.h"
 #include "core/system.h"
 #include "io/output_file.h"
@@ -139,8 +141,9 @@ std::string readImage(const std::string& path, Image& image) {
     if (stat(path.c_str(), &st) != 0) return "cannot read \"" + path + "\": " + std::strerror(errno);
     if (S_ISDIR(st.st_mode)) return "cannot read \"" + path + "\": it is a folder, not an image";
     if (!S_ISREG(st.st_mode)) return "cannot read \"" + path + "\": not a regular file (a device or pipe?)";
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) return "cannot read \"" + path + "\": " + OIIO::geterror();
+    std::string error;
+    auto in = openImageFile(path, error);
+    if (!in) return "cannot read \"" + path + "\": " + error;
     const OIIO::ImageSpec spec = in->spec();
     int w = spec.width, h = spec.height, nc = spec.nchannels;
     if (w <= 0 || h <= 0 || nc <= 0) return "\"" + path + "\": empty image";

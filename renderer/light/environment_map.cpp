@@ -1,5 +1,7 @@
 #include "light/environment_map.h"
 
+#include "image/image_input.h"
+
 #include "scene/load_error.h"
 #include "texture/texture_io.h"
 
@@ -56,8 +58,9 @@ EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees
     if (!std::filesystem::is_regular_file(path, ec))
         throw LoadError("environment map \"" + path + "\" " +
                         (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found"));
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw LoadError("cannot read environment map \"" + path + "\": " + OIIO::geterror());
+    std::string error;
+    auto in = openImageFile(path, error);
+    if (!in) throw LoadError("cannot read environment map \"" + path + "\": " + error);
     const OIIO::ImageSpec spec = in->spec();
     int w = spec.width, h = spec.height, nc = spec.nchannels;
     if (w <= 0 || h <= 0 || nc <= 0)

@@ -2,6 +2,7 @@
 
 #include "core/color.h"
 #include "core/system.h"
+#include "image/image_input.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -82,9 +83,9 @@ bool readTexture(const std::string& path, bool colour, Texture& texture, std::st
         error = "texture \"" + path + "\" " + (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found");
         return false;
     }
-    auto in = OIIO::ImageInput::open(path);
+    auto in = openImageFile(path, error);
     if (!in) {
-        error = "cannot read texture \"" + path + "\": " + OIIO::geterror();
+        error = "cannot read texture \"" + path + "\": " + error;
         return false;
     }
     return decodeTexture(*in, path, colour, texture, error, budgetBytes, tooLarge);
@@ -94,9 +95,9 @@ bool readTextureFromMemory(const std::vector<unsigned char>& bytes, const std::s
                            bool colour, Texture& texture, std::string& error, double budgetBytes, bool& tooLarge) {
     tooLarge = false;
     OIIO::Filesystem::IOMemReader reader(const_cast<unsigned char*>(bytes.data()), bytes.size());
-    auto in = OIIO::ImageInput::open("image" + format, nullptr, &reader);
+    auto in = openImageMemory(bytes, reader, "image" + format, error);
     if (!in) {
-        error = "cannot decode " + name + ": " + OIIO::geterror();
+        error = "cannot decode " + name + ": " + error;
         return false;
     }
     return decodeTexture(*in, name, colour, texture, error, budgetBytes, tooLarge);

@@ -1,0 +1,74 @@
+#include "image/image_input.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace pt {
+namespace {
+
+const char* const kKnownFormats = "PNG, JPEG, OpenEXR, Radiance HDR, TIFF, BMP, GIF, PNM/PFM, WebP or TGA";
+
+bool startsWith(const unsigned char* head, size_t size, const char* magic, size_t length) {
+    return size >= length && std::memcmp(head, magic, length) == 0;
+}
+
+std::unique_ptr<OIIO::ImageInput> openAs(const std::string& format, const std::string& name, OIIO::Filesystem::IOProxy* proxy,
+                                         std::string& error) {
+    if (format.empty()) {
+        error = "not an image file pt reads (its first bytes are those of none of " + std::string(kKnownFormats) + ")";
+        return nullptr;
+    }
+    auto in = OIIO::ImageInput::create(format);
+    if (!in) {
+        error = "this build of OpenImageIO has no " + format + " reader";
+        return nullptr;
+    }
+    if (proxy && (!in->supports("ioproxy") || !in->set_ioproxy(proxy))) {
+        error = "OpenImageIO's " + format + " reader cannot read from memory";
+        return nullptr;
+    }
+    OIIO::ImageSpec spec;
+    if (!in->open(name, spec)) {
+        error = in->geterror();
+        if (error.empty()) error = OIIO::geterror();
+        if (error.empty()) error = "not a valid " + format + " file";
+        return nullptr;
+    }
+    return in;
+}
+
+} // namespace
+
+std::string imageFormatOf(const unsigned char* head, size_t size, const std::string& name) {
+    if (startsWith(head, size, "\x89PNG", 4)) return "png";
+    if (startsWith(head, size, "\xFF\xD8\xFF", 3)) return "jpeg";
+    if (startsWith(head, size, "\x76\x2F\x31\x01", 4)) return "openexr";
+    if (startsWith(head, size, "#?", 2)) return "hdr"; // #?RADIANCE, #?RGBE
+    if (startsWith(head, size, "II*\0", 4) || startsWith(head, size, "MM\0*", 4)) return "tiff";
+    if (startsWith(head, size, "BM", 2)) return "bmp";
+    if (startsWith(head, size, "GIF8", 4)) return "gif";
+    if (size >= 2 && head[0] == 'P' && std::strchr("123456Ff", head[1]) && head[1] != 0) return "pnm";
+    if (startsWith(head, size, "RIFF", 4) && size >= 12 && std::memcmp(head + 8, "WEBP", 4) == 0) return "webp";
+    std::string ext = std::filesystem::path(name).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext == ".tga" || ext == ".tpic") return "targa"; // the one format without a magic number
+    return "";
+}
+
+std::unique_ptr<OIIO::ImageInput> openImageFile(const std::string& path, std::string& error) {
+    unsigned char head[16] = {};
+    std::ifstream file(path, std::ios::binary);
+    file.read(reinterpret_cast<char*>(head), sizeof head);
+    return openAs(imageFormatOf(head, size_t(file.gcount()), path), path, nullptr, error);
+}
+
+std::unique_ptr<OIIO::ImageInput> openImageMemory(const std::vector<unsigned char>& bytes,
+                                                  OIIO::Filesystem::IOMemReader& reader, const std::string& name,
+                                                  std::string& error) {
+    return openAs(imageFormatOf(bytes.data(), bytes.size(), name), name, &reader, error);
+}
+
+} // namespace pt
