@@ -76,6 +76,23 @@ static void checkCamera(const Scene& scene, const Camera& c) {
         throw LoadError(what + "its aspect ratio " + shortNumber(c.aspect) + " is outside [1/65536, 65536]");
 }
 
+// A float texture can hold any value: a map multiplies its factor by its largest texel, and the
+// product must stay within the limit the factor alone is held to.
+static void checkMaps(const Scene& scene, const Material& m) {
+    auto check = [&](const TextureMap& map, double factor, double limit, const char* what, const char* limitText) {
+        if (!map.used()) return;
+        const Texture& t = (*scene.textures)[map.texture];
+        if (!(double(t.peak) * factor <= limit))
+            throw LoadError(scene.path + ": material \"" + m.name + "\": its " + what + " texture \"" + t.path + "\" reaches " +
+                            shortNumber(t.peak) + ", which times its factor " + shortNumber(factor) + " passes " + limitText);
+    };
+    check(m.kdMap, maxComponent(m.kd), kMaxReflectance, "diffuse or base colour", "the reflectance limit 10");
+    check(m.ksMap, maxComponent(m.ks), kMaxReflectance, "specular colour", "the reflectance limit 10");
+    check(m.emissionMap, maxComponent(m.emission), kMaxRadiance, "emission", "the radiance limit 1e18");
+    check(m.normalMap, std::abs(m.normalMap.bumpScale), kMaxNormalScale, "normal", "1e6, where normals overflow float");
+    check(m.bumpMap, std::abs(m.bumpMap.bumpScale), kMaxNormalScale, "bump", "1e6, where normals overflow float");
+}
+
 // The limits of scene/scene_limits.h that depend on the size of the whole scene.
 static void checkSceneLimits(const Scene& scene) {
     Vec3 lo, hi;
@@ -95,6 +112,7 @@ static void checkSceneLimits(const Scene& scene) {
     }
     float size = all_lo.x <= all_hi.x ? safeLength(all_hi - all_lo) : 0.0f;
     for (const Camera& c : scene.cameras) checkCamera(scene, c);
+    for (const Material& m : scene.materials) checkMaps(scene, m);
     for (const DirectionalLight& d : scene.directionalLights)
         if (!(maxComponent(d.irradiance) <= kMaxRadiance))
             throw LoadError(scene.path + ": directional light \"" + d.name + "\": irradiance " +

@@ -92,6 +92,8 @@ int TextureCache::add(Texture&& texture) {
         int cacheMB = int(std::clamp(physical > 0 ? physical / 8e6 : 1024.0, 256.0, 8192.0));
         ts.attribute("max_memory_MB", float(cacheMB));
     }
+    texture.peak = 0.0f;
+    for (float v : texture.texels) texture.peak = std::max(texture.peak, std::abs(v));
     textures_.push_back(std::move(texture));
     std::string name = impl_->prefix + std::to_string(textures_.size() - 1);
     {

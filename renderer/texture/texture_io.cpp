@@ -66,9 +66,17 @@ bool decodeTexture(OIIO::ImageInput& imageInput, const std::string& path, bool c
     texture.width = w;
     texture.height = h;
     texture.channels = stored;
-    for (float& v : texture.texels) {
+    for (size_t i = 0; i < texture.texels.size(); ++i) {
+        float& v = texture.texels[i];
         if (colour && !isLinear) v = srgbToLinear(v);
-        v = !std::isfinite(v) ? 0.0f : colour ? std::max(v, 0.0f) : v; // data may be signed
+        if (std::isfinite(v) && (v >= 0.0f || !colour)) continue; // data may be signed
+        size_t pixel = i / size_t(stored);
+        char what[200];
+        std::snprintf(what, sizeof what, "texel (%zu, %zu) channel %zu is %g; %s", pixel % size_t(w), pixel / size_t(w),
+                      i % size_t(stored), double(v), colour ? "a colour must be finite and not negative" : "values must be finite");
+        error = "texture \"" + path + "\": " + what;
+        texture.texels.clear();
+        return false;
     }
     return true;
 }
