@@ -192,7 +192,8 @@ int mergeCommand(int argc, char** argv) {
             std::fprintf(err, "pt merge: warning: %zu pixels hold no sample at all (no part covers them): they are black\n", empty);
     }
 
-    Image image = filmImage(film, aovs, std::atof(attributeText(parts[0].image, "pt:exposure").c_str()));
+    size_t overflowed;
+    Image image = filmImage(film, aovs, std::atof(attributeText(parts[0].image, "pt:exposure").c_str()), overflowed);
     for (const ImageAttribute& a : parts[0].image.metadata) {
         if (a.name.rfind("pt:", 0) != 0 && a.name != "Software") continue; // OpenEXR's own header fields stay its own
         static const char* const kPartOnly[] = {"pt:part", "pt:samplesFirst", "pt:samplesLast", "pt:spp", "pt:renderSeconds",

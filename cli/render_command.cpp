@@ -10,6 +10,7 @@
 #include "render/film_image.h"
 #include "render/render_job.h"
 #include "render/renderer.h"
+#include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 
 #include <tbb/info.h>
@@ -84,7 +85,8 @@ options (default in brackets):
   --sun-dir X,Y,Z        the direction towards the sun, instead of the two angles
   --turbidity T          haze, from 1.7 (very clear) to 10 (hazy) [3]
   --sky-scale S          multiply the sky's, sun's and ground's radiance by S [1]
-  --exposure EV          multiply the image by 2^EV (the variance layer by its square) [0]
+  --exposure EV          multiply the image by 2^EV (the variance layer by its square),
+                         EV in [-32, 32] [0]
   --clamp X              scale down any sample whose largest channel exceeds X: fewer
                          fireflies, but biased (light is lost); 0 is off [0]
   --samples A:B          render only sample indices [A, B) of the job's -spp per pixel,
@@ -217,7 +219,7 @@ RenderArgs parseArgs(int argc, char** argv) {
         } else if (opt == "aov") {
             r.aovs = parseAovList(args.value(opt));
         } else if (opt == "exposure") {
-            r.exposure = args.number(opt, -64.0, 64.0);
+            r.exposure = args.number(opt, -kMaxExposure, kMaxExposure);
         } else if (opt == "clamp") {
             r.settings.clamp = float(args.number(opt, 0.0, 1e30));
         } else if (opt == "env") {
@@ -240,7 +242,11 @@ RenderArgs parseArgs(int argc, char** argv) {
             r.sunDirGiven = true;
             if (r.skyOption.empty()) r.skyOption = args.spelled(opt);
         } else if (opt == "turbidity") {
-            r.skyParameters.turbidity = float(args.number(opt, kMinTurbidity, kMaxTurbidity));
+            double t = args.number(opt, 0.0, 1e30);
+            if (!turbidityInRange(t))
+                throw UsageError("option --turbidity: " + shortNumber(t) + " is out of range [1.7, 10], the range of "
+                                 "Preetham et al.'s fit (1.7 very clear, 10 hazy)");
+            r.skyParameters.turbidity = float(t);
             if (r.skyOption.empty()) r.skyOption = args.spelled(opt);
         } else if (opt == "sky-scale") {
             r.skyParameters.scale = float(args.number(opt, 0.0, 1e30));
@@ -292,6 +298,10 @@ RenderArgs parseArgs(int argc, char** argv) {
     if (r.sunAnglesGiven && r.sunDirGiven)
         throw UsageError("--sun-dir and --sun-elevation/--sun-azimuth both place the sun; give one or the other");
     if (!r.sunDirGiven) r.skyParameters.sunDirection = sunDirectionFromAngles(r.sunElevation, r.sunAzimuth);
+    if (double peak = skyPeakRadiance(r.skyParameters); r.sky && !(peak <= kMaxRadiance))
+        throw UsageError("option --sky-scale: " + shortNumber(r.skyParameters.scale) + " makes the sky's peak radiance (the sun's disk where it is up) " +
+                         shortNumber(peak) + ", beyond the 1e18 whose samples fit in float; at most " +
+                         shortNumber(kMaxRadiance / (peak / r.skyParameters.scale)) + " for this sun and turbidity");
     bool anyAov = r.aovs.any();
     if ((r.part() || !r.resume.empty()) && formatFromPath(r.output) != ImageFormat::Exr)
         throw UsageError(std::string(r.samplesGiven ? "--samples" : r.cropGiven ? "--crop" : "--resume") +
@@ -660,8 +670,11 @@ int renderCommand(int argc, char** argv) {
     line.stop();
     const RenderResult& result = *rendered;
 
-    Image image = filmImage(result.film, args.aovs,
-                            args.exposure);
+    size_t overflowed;
+    Image image = filmImage(result.film, args.aovs, args.exposure, overflowed);
+    if (overflowed > 0 && !args.quiet)
+        std::fprintf(err, "pt: warning: %zu values of the image and its layers pass float's range (at --exposure %g) and "
+                          "are written as the largest float\n", overflowed, args.exposure);
     image.metadata = job.metadata;
     // A part (or the partial image of an .exr render, so that it can be resumed or merged) carries
     // the sums merging needs.

@@ -82,7 +82,8 @@ static std::string encodeImage(ImageFormat format, const Image& image, std::vect
         std::vector<uint8_t> pixels(n * 3);
         for (size_t i = 0; i < n * 3; ++i) {
             float v = image.rgb[i];
-            v = std::isfinite(v) ? std::clamp(linearToSrgb(std::max(v, 0.0f)), 0.0f, 1.0f) : 0.0f;
+            // Saturated as a display would: infinity is white; only NaN, which has no brightness, is black.
+            v = std::isnan(v) ? 0.0f : std::clamp(linearToSrgb(std::clamp(v, 0.0f, 1.0f)), 0.0f, 1.0f);
             pixels[i] = uint8_t(std::lround(v * 255.0f));
         }
         if (!out->set_ioproxy(&proxy) || !out->open(name, spec) ||

@@ -2,11 +2,14 @@
 
 #include "image/image_input.h"
 
+#include "core/system.h"
 #include "scene/load_error.h"
+#include "scene/scene_limits.h"
 #include "texture/texture_io.h"
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -93,6 +96,11 @@ EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees
             throw LoadError("environment map \"" + path + "\": " + what);
         }
     }
+    // Scaled, the brightest texel must stay a radiance whose samples fit in float, as emitters do.
+    double peak = values.empty() ? 0.0 : double(*std::max_element(values.begin(), values.end())) * scale;
+    if (!(peak <= kMaxRadiance))
+        throw LoadError("environment map \"" + path + "\": its brightest texel, times its scale " + shortNumber(scale) +
+                        ", is a radiance of " + shortNumber(peak) + ", beyond the 1e18 whose samples fit in float");
     if (read == 3) {
         map.rgb = std::move(values);
     } else {

@@ -18,6 +18,9 @@ inline constexpr double kSunAngularRadius = 959.63 / 3600.0 * 3.1415926535897932
 inline constexpr float kGroundAlbedo = 0.2f;
 // Where the model's fit holds: below 1.65 its luminance distribution turns negative.
 inline constexpr float kMinTurbidity = 1.7f, kMaxTurbidity = 10.0f;
+// The one rule for --turbidity and the MTL's turbidity: the value as the sky keeps it, a float,
+// within the fit's range (so 1.7 is in range whether typed on the command line or in a file).
+inline bool turbidityInRange(double t) { return float(t) >= kMinTurbidity && float(t) <= kMaxTurbidity; }
 
 struct SkyParameters {
     Vec3 sunDirection{0.0f, 1.0f, 0.0f}; // unit, from the scene towards the sun; +y is up

@@ -41,6 +41,15 @@ Environment skyEnvironment(const SkyParameters& parameters) {
     return env;
 }
 
+double skyPeakRadiance(const SkyParameters& parameters) {
+    PreethamSky sky(parameters);
+    Vec3 sun = parameters.sunDirection, horizon = safeNormalize(Vec3(sun.x, std::max(sun.y, 0.0f), sun.z));
+    double peak = maxComponent(sky.sunRadiance());
+    for (Vec3 d : {sun, horizon, Vec3(0.0f, 1.0f, 0.0f)})
+        if (d != Vec3(0.0f)) peak = std::max(peak, double(maxComponent(sky.radiance(d))));
+    return peak;
+}
+
 Vec3 sunDirectionFromAngles(double elevationDegrees, double azimuthDegrees) {
     double e = elevationDegrees * (M_PI / 180.0), a = azimuthDegrees * (M_PI / 180.0);
     return glm::normalize(Vec3(float(std::sin(a) * std::cos(e)), float(std::sin(e)), float(-std::cos(a) * std::cos(e))));

@@ -24,6 +24,9 @@ SunDisk sunDisk(const PreethamSky& sky);
 struct Environment;
 // The environment of a scene lit by the sky and its sun.
 Environment skyEnvironment(const SkyParameters& parameters);
+// The brightest radiance of that environment, its scale included: the sun's disk, or where the
+// sun is down the sky itself (towards the sun, and at the zenith). Checked against kMaxRadiance.
+double skyPeakRadiance(const SkyParameters& parameters);
 
 // Direction towards the sun from its elevation above the horizon and its azimuth, in degrees.
 // Azimuth 0 is -z (straight ahead of a camera looking down -z), 90 is +x: clockwise seen from

@@ -3,6 +3,7 @@
 #include "render/render_job.h"
 
 #include <cmath>
+#include <limits>
 
 #include <algorithm>
 
@@ -43,18 +44,26 @@ const ImageLayer* find(const Image& image, const std::string& name, size_t chann
 
 } // namespace
 
-Image filmImage(const Film& film, const AovSelection& aovs, double exposure) {
+Image filmImage(const Film& film, const AovSelection& aovs, double exposure, size_t& overflowed) {
     Image image;
     image.width = film.width();
     image.height = film.height();
     image.rgb = film.mean();
-    const float gain = float(std::exp2(exposure));
-    if (exposure != 0.0)
-        for (float& v : image.rgb) v *= gain;
+    overflowed = 0;
+    auto scale = [&](std::vector<float>& values, double gain) {
+        for (float& v : values) {
+            double x = double(v) * gain;
+            if (!(std::abs(x) <= double(std::numeric_limits<float>::max()))) {
+                ++overflowed;
+                x = std::copysign(double(std::numeric_limits<float>::max()), x);
+            }
+            v = float(x);
+        }
+    };
+    if (exposure != 0.0) scale(image.rgb, std::exp2(exposure));
     if (aovs.variance) {
         image.layers.push_back({"variance", {"R", "G", "B"}, film.varianceOfMean()});
-        if (exposure != 0.0)
-            for (float& v : image.layers.back().pixels) v *= gain * gain;
+        scale(image.layers.back().pixels, std::exp2(2.0 * exposure)); // a mean's variance scales by the square
     }
     if (aovs.albedo) image.layers.push_back({"albedo", {"R", "G", "B"}, film.albedo()});
     if (aovs.normal) image.layers.push_back({"normal", {"X", "Y", "Z"}, film.normal()});

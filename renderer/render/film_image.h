@@ -20,8 +20,13 @@ struct AovSelection {
 };
 
 // The film's mean as RGB times 2^exposure (its variance by the square), with the AOVs asked for;
-// first-hit layers need a film that has them.
-Image filmImage(const Film& film, const AovSelection& aovs, double exposure);
+// first-hit layers need a film that has them. Scaled in double: a value the exposure takes past
+// float's range is written as the largest float and counted in `overflowed`, for a warning.
+Image filmImage(const Film& film, const AovSelection& aovs, double exposure, size_t& overflowed);
+
+// The largest |exposure| pt accepts, in EV: 2^32 either way is beyond any photographic use, and
+// its square (the variance layer's factor, 2^64) still leaves ordinary values inside float.
+inline constexpr double kMaxExposure = 32.0;
 
 // The film's pixels as layers of `image` (its size, window and metadata are the caller's).
 void addPartLayers(Image& image, const Film& film);

@@ -38,7 +38,7 @@ struct PendingEnvironment {
     std::string file;         // resolved against the MTL's folder
     size_t fileLine = 0;
     float rotate = 0.0f, scale = 1.0f;
-    size_t rotateLine = 0, scaleLine = 0;
+    size_t rotateLine = 0, scaleLine = 0, skyScaleLine = 0;
     size_t skyLine = 0;       // of envsky
     size_t firstSkyKeywordLine = 0;
     std::string firstSkyKeyword;
@@ -302,6 +302,10 @@ void MtlParser::finishBlock() {
                 throw LoadError(path, std::max(e.sunDirLine, e.sunAnglesLine),
                                 "sundir and sunelevation/sunazimuth both place the sun; give one or the other");
             if (!e.sunDirLine) e.sky.sunDirection = sunDirectionFromAngles(e.sunElevation, e.sunAzimuth);
+            if (double peak = skyPeakRadiance(e.sky); !(peak <= kMaxRadiance))
+                throw LoadError(path, e.skyScaleLine ? e.skyScaleLine : blockLine,
+                                "skyscale " + shortNumber(e.sky.scale) + ": the sky's peak radiance (the sun's disk where it is up) becomes " + shortNumber(peak) +
+                                    ", beyond the 1e18 whose samples fit in float");
             scene.environment = skyEnvironment(e.sky);
             if (e.sky.sunDirection.y < 0.0f)
                 warnings.add(path + ":" + std::to_string(e.sunDirLine ? e.sunDirLine : e.sunAnglesLine) +
@@ -494,17 +498,19 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
             e.sunAnglesLine = lines.lineNumber();
         } else if (name == "sundir") {
             Vec3 d = t.vec3(keyword);
-            float length = safeLength(d);
-            if (!(length > 0.0f) || !std::isfinite(length)) t.fail("sundir: expected a direction X Y Z of non-zero length");
-            e.sky.sunDirection = safeNormalize(d);
+            glm::dvec3 exact(d); // in double: a direction of (3e38, 3e38, 3e38) has no float length
+            double length = glm::length(exact);
+            if (!(length > 0.0) || !std::isfinite(length)) t.fail("sundir: expected a direction X Y Z of non-zero length");
+            e.sky.sunDirection = Vec3(exact / length);
             e.sunDirLine = lines.lineNumber();
         } else if (name == "turbidity") {
             e.sky.turbidity = t.number(keyword);
-            if (!(e.sky.turbidity >= kMinTurbidity && e.sky.turbidity <= kMaxTurbidity))
-                t.fail("turbidity: expected a value in [1.7, 10] (1.7 very clear, 10 hazy), found " +
-                       shortNumber(e.sky.turbidity));
+            if (!turbidityInRange(e.sky.turbidity))
+                t.fail("turbidity: expected a value in [1.7, 10], the range of Preetham et al.'s fit (1.7 very clear, "
+                       "10 hazy), found " + shortNumber(e.sky.turbidity));
         } else {
             e.sky.scale = nonNegative(t, keyword);
+            e.skyScaleLine = lines.lineNumber();
         }
     }
     // Cameras.
