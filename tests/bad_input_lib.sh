@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Shared by the bad-input suites (bad_input_test.sh, bad_gltf_test.sh): a scratch folder, and
+# check(), which runs one case. Sourced with the path of pt as its argument.
+set -uo pipefail
+pt=$(realpath "$1")
+gltf=$(realpath "$(dirname "$0")/../scenes/gltf")
+tmp=$(mktemp -d)
+trap 'chmod -R u+w "$tmp" 2>/dev/null; rm -rf "$tmp"' EXIT
+cd "$tmp" || exit 1
+failures=0
+fail() {
+  echo "FAIL: $*"
+  failures=$((failures + 1))
+}
+
+# check NAME STATUS TEXT pt-arguments...: runs pt with a fresh output path out/NAME.exr (unless
+# the arguments name one) and checks status, text, and that a failed run wrote nothing.
+check() {
+  local name=$1 status=$2 text=$3
+  shift 3
+  mkdir -p out
+  local output got
+  output=$(timeout 120 "$pt" "$@" 2>&1)
+  got=$?
+  if [[ $got -ne $status ]]; then
+    fail "$name: exit $got, expected $status; output: $(echo "$output" | head -3)"
+  elif [[ "$output" != *"$text"* ]]; then
+    fail "$name: output does not contain \"$text\": $(echo "$output" | head -3)"
+  elif [[ "$output" == *"terminate called"* || "$output" == *"Segmentation"* || "$output" == *"Aborted"* ]]; then
+    fail "$name: crashed: $output"
+  fi
+  if [[ $status -ne 0 && -n "$(ls -A out)" ]]; then fail "$name: a failed run left $(ls -A out)"; fi
+  rm -rf out
+}
+
+# Ends the suite: its status is the number of failed checks (0: all passed).
+finish() {
+  if [[ $failures -gt 0 ]]; then
+    echo "$failures bad-input checks failed"
+    exit 1
+  fi
+  echo "all bad-input checks passed"
+}
