@@ -3,13 +3,16 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/console.h"
+#include "cli/stop_signals.h"
 #include "io/output_file.h"
 #include "image/image_io.h"
 #include "render/film_image.h"
+#include "render/film_part.h"
 #include "render/render_job.h"
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 namespace pt::cli {
@@ -37,14 +40,6 @@ options (default in brackets):
 exit status: 0 merged, 1 bad input (a missing, truncated or foreign file, parts of different
 jobs, overlapping samples), 2 bad usage. On an error nothing is written and OUT is untouched.
 )";
-
-struct Part {
-    std::string path;
-    Image image;
-    Film film{0, 0};
-    uint32_t first = 0, last = 0;
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-};
 
 // Runs of indices [a, b) of [0, n) that `covered` leaves out, as "a:b, c:d".
 std::string missingRanges(std::vector<std::pair<uint32_t, uint32_t>> covered, uint32_t n) {
@@ -104,86 +99,88 @@ int mergeCommand(int argc, char** argv) {
         std::fprintf(err, "pt merge: %s\n", e.what());
         return 2;
     }
-    if (quiet) silenceLibraryOutput();
+    if (quiet) {
+        silenceLibraryOutput();
+        err = errorStream(); // pt's own stderr, which -q leaves open for errors
+    }
+    // Reading and writing are quick to do again: a signal quits at once, and removes the
+    // temporary output file if it is being written.
+    installStopHandlers("pt merge: interrupted; nothing was written\n");
 
-    // Every part read and checked before anything is written.
-    std::vector<Part> parts(paths.size());
-    for (size_t i = 0; i < paths.size(); ++i) {
-        Part& p = parts[i];
-        p.path = paths[i];
-        if (std::string error = readPart(p.path, p.image, p.film); !error.empty()) {
+    // One part at a time: read, checked against the first (the job) and against those before it
+    // (no sample of a pixel twice), added to the merged film and let go, so that a merge holds one
+    // part beside the image whatever their number. Nothing is written before all are in.
+    struct Merged {
+        std::string path;
+        PartInfo info;
+        bool layers;
+    };
+    std::vector<Merged> merged;
+    Image job; // the first part's metadata
+    std::optional<Film> film;
+    double seconds = 0.0;
+    for (const std::string& path : paths) {
+        Image image;
+        Film part(0, 0);
+        PartInfo in;
+        if (std::string error = readPart(path, image, part, in); !error.empty()) {
             std::fprintf(err, "pt merge: error: %s\n", error.c_str());
             return 1;
         }
         std::string field, a, b;
-        if (i > 0 && jobMismatch(parts[0].image, p.image, field, a, b)) {
+        if (!merged.empty() && jobMismatch(job, image, field, a, b)) {
             std::fprintf(err, "pt merge: error: %s is a part of another job than %s: its %s is \"%s\", not \"%s\"\n",
-                         p.path.c_str(), parts[0].path.c_str(), field.c_str(), b.c_str(), a.c_str());
+                         path.c_str(), merged[0].path.c_str(), field.c_str(), b.c_str(), a.c_str());
             return 1;
         }
-        p.first = uint32_t(std::stoul("0" + attributeText(p.image, "pt:samplesFirst")));
-        p.last = uint32_t(std::stoul("0" + attributeText(p.image, "pt:samplesLast")));
-        bool windowed = p.image.fullWidth > 0;
-        p.x0 = windowed ? p.image.x : 0, p.y0 = windowed ? p.image.y : 0;
-        p.x1 = p.x0 + p.image.width, p.y1 = p.y0 + p.image.height;
-    }
-    const int width = std::stoi("0" + attributeText(parts[0].image, "pt:fullWidth"));
-    const int height = std::stoi("0" + attributeText(parts[0].image, "pt:fullHeight"));
-    const uint32_t spp = uint32_t(std::stoul("0" + attributeText(parts[0].image, "pt:sppRequested")));
-    bool layers = true;
-    for (const Part& p : parts) {
-        if (p.x0 < 0 || p.y0 < 0 || p.x1 > width || p.y1 > height || p.last <= p.first || p.last > spp) {
-            std::fprintf(err, "pt merge: error: %s: its window or sample range does not fit its job (%dx%d, %u spp)\n",
-                         p.path.c_str(), width, height, spp);
-            return 1;
-        }
-        layers &= p.film.hasFirstHitLayers();
-    }
-    if (aovs.firstHit() && !layers) {
-        for (const Part& p : parts)
-            if (!p.film.hasFirstHitLayers())
-                std::fprintf(err, "pt merge: error: %s has no first-hit sums; --aov albedo, normal and depth need every part "
-                                  "rendered with one of them\n", p.path.c_str());
-        return 1;
-    }
-    // No two parts may hold the same samples of a pixel.
-    for (size_t i = 0; i < parts.size(); ++i)
-        for (size_t j = i + 1; j < parts.size(); ++j) {
-            const Part &a = parts[i], &b = parts[j];
-            bool pixels = a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
-            bool samples = a.first < b.last && b.first < a.last;
+        for (const Merged& m : merged) {
+            const PartInfo& o = m.info;
+            bool pixels = o.x0 < in.x1 && in.x0 < o.x1 && o.y0 < in.y1 && in.y0 < o.y1;
+            bool samples = o.first < in.last && in.first < o.last;
             if (pixels && samples) {
                 std::fprintf(err, "pt merge: error: %s and %s both hold samples %u:%u of pixels [%d, %d) x [%d, %d); "
                                   "merging them would count those samples twice\n",
-                             a.path.c_str(), b.path.c_str(), std::max(a.first, b.first), std::min(a.last, b.last),
-                             std::max(a.x0, b.x0), std::min(a.x1, b.x1), std::max(a.y0, b.y0), std::min(a.y1, b.y1));
+                             m.path.c_str(), path.c_str(), std::max(o.first, in.first), std::min(o.last, in.last),
+                             std::max(o.x0, in.x0), std::min(o.x1, in.x1), std::max(o.y0, in.y0), std::min(o.y1, in.y1));
                 return 1;
             }
         }
-
-    Film film(width, height);
-    if (layers) film.enableFirstHitLayers();
-    double seconds = 0.0;
-    for (const Part& p : parts) {
-        for (int y = p.y0; y < p.y1; ++y)
-            for (int x = p.x0; x < p.x1; ++x)
-                film.addPixel(size_t(y) * width + x, p.film, size_t(y - p.y0) * p.image.width + (x - p.x0));
-        seconds += std::atof(attributeText(p.image, "pt:renderSeconds").c_str());
+        if (merged.empty()) {
+            job.metadata = image.metadata;
+            film.emplace(in.fullWidth, in.fullHeight); // within the memory budget: partFromImage checked
+            film->enableFirstHitLayers();              // kept only if every part has them
+        }
+        for (int y = in.y0; y < in.y1; ++y)
+            for (int x = in.x0; x < in.x1; ++x)
+                film->addPixel(size_t(y) * size_t(in.fullWidth) + size_t(x), part, size_t(y - in.y0) * size_t(image.width) + size_t(x - in.x0));
+        seconds += in.seconds;
+        merged.push_back({path, in, part.hasFirstHitLayers()});
+    }
+    const int width = merged[0].info.fullWidth, height = merged[0].info.fullHeight;
+    const uint32_t spp = merged[0].info.spp;
+    bool layers = std::all_of(merged.begin(), merged.end(), [](const Merged& m) { return m.layers; });
+    if (aovs.firstHit() && !layers) {
+        for (const Merged& m : merged)
+            if (!m.layers)
+                std::fprintf(err, "pt merge: error: %s has no first-hit sums; --aov albedo, normal and depth need every part "
+                                  "rendered with one of them\n", m.path.c_str());
+        return 1;
     }
 
     // Gaps: pixels short of the job's samples, and which sample ranges no part covers.
     size_t empty = 0, short_ = 0;
     uint32_t fewest = spp;
     for (size_t i = 0; i < size_t(width) * height; ++i) {
-        uint32_t n = film.count(i);
+        uint32_t n = film->count(i);
         empty += n == 0;
         short_ += n < spp;
         fewest = std::min(fewest, n);
     }
     if (short_ > 0 && !quiet) {
         std::vector<std::pair<uint32_t, uint32_t>> ranges;
-        for (const Part& p : parts)
-            if (p.x0 == 0 && p.y0 == 0 && p.x1 == width && p.y1 == height) ranges.emplace_back(p.first, p.last);
+        for (const Merged& m : merged)
+            if (m.info.x0 == 0 && m.info.y0 == 0 && m.info.x1 == width && m.info.y1 == height)
+                ranges.emplace_back(m.info.first, m.info.last);
         std::string missing = missingRanges(ranges, spp);
         std::fprintf(err, "pt merge: warning: %zu of %d pixels hold fewer than the job's %u samples (the fewest %u)%s%s\n",
                      short_, width * height, spp, fewest,
@@ -193,8 +190,11 @@ int mergeCommand(int argc, char** argv) {
     }
 
     size_t overflowed;
-    Image image = filmImage(film, aovs, std::atof(attributeText(parts[0].image, "pt:exposure").c_str()), overflowed);
-    for (const ImageAttribute& a : parts[0].image.metadata) {
+    Image image = filmImage(*film, aovs, merged[0].info.exposure, overflowed);
+    if (overflowed > 0 && !quiet)
+        std::fprintf(err, "pt merge: warning: %zu values of the image and its layers pass float's range (at pt:exposure %g) "
+                          "and are written as the largest float\n", overflowed, merged[0].info.exposure);
+    for (const ImageAttribute& a : job.metadata) {
         if (a.name.rfind("pt:", 0) != 0 && a.name != "Software") continue; // OpenEXR's own header fields stay its own
         static const char* const kPartOnly[] = {"pt:part", "pt:samplesFirst", "pt:samplesLast", "pt:spp", "pt:renderSeconds",
                                                "pt:threads", "pt:threadsRequested", "pt:interrupted"};
@@ -203,7 +203,7 @@ int mergeCommand(int argc, char** argv) {
             image.metadata.push_back(a);
     }
     image.metadata.push_back(ImageAttribute::integerValue("pt:spp", fewest));
-    image.metadata.push_back(ImageAttribute::integerValue("pt:mergedParts", (long long)parts.size()));
+    image.metadata.push_back(ImageAttribute::integerValue("pt:mergedParts", (long long)merged.size()));
     image.metadata.push_back(ImageAttribute::floatValue("pt:renderSeconds", seconds));
     if (std::string error = output.open(outputPath); !error.empty()) {
         std::fprintf(err, "pt merge: %s\n", error.c_str());
@@ -213,7 +213,7 @@ int mergeCommand(int argc, char** argv) {
         std::fprintf(err, "pt merge: error: %s\n", error.c_str());
         return 1;
     }
-    std::printf("pt merge: %zu parts, %dx%d, %u of %u spp in every pixel, %.3f s of rendering -> %s\n", parts.size(), width,
+    std::printf("pt merge: %zu parts, %dx%d, %u of %u spp in every pixel, %.3f s of rendering -> %s\n", merged.size(), width,
                 height, fewest, spp, seconds, outputPath.c_str());
     return 0;
 }

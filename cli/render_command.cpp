@@ -3,11 +3,13 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/console.h"
+#include "cli/stop_signals.h"
 #include "core/system.h"
 #include "io/output_file.h"
 #include "image/image_io.h"
 #include "light/sky_environment.h"
 #include "render/film_image.h"
+#include "render/film_part.h"
 #include "render/render_job.h"
 #include "render/renderer.h"
 #include "scene/scene_limits.h"
@@ -378,37 +380,6 @@ private:
     bool stop_ = false;
 };
 
-// SIGINT and SIGTERM ask the running render to stop. A second signal quits at once: it removes
-// any temporary output file (so nothing truncated is left), says so, and exits.
-std::atomic<bool>* gCancel = nullptr;
-volatile std::sig_atomic_t gSignal = 0;
-
-extern "C" void onStopSignal(int sig) {
-    if (gSignal != 0) {
-        removeTemporaryOutputs();
-        static const char message[] = "pt: second signal: stopped at once; no output file was written or left behind\n";
-        ssize_t ignored = write(errorFd(), message, sizeof message - 1);
-        (void)ignored;
-        _exit(128 + sig);
-    }
-    gSignal = sig;
-    if (gCancel) gCancel->store(true); // lock-free, so safe in a handler
-}
-
-void installStopHandlers(std::atomic<bool>& cancel) {
-    static_assert(std::atomic<bool>::is_always_lock_free);
-    gCancel = &cancel;
-    struct sigaction sa {};
-    sa.sa_handler = onStopSignal;
-    sigemptyset(&sa.sa_mask);
-    for (int sig : {SIGINT, SIGTERM}) {
-        struct sigaction old {};
-        sigaction(sig, nullptr, &old);
-        if (old.sa_handler == SIG_IGN) continue; // ignored by whoever started us (a background job): keep it so
-        sigaction(sig, &sa, nullptr);
-    }
-}
-
 // out.exr -> out.partial.exr: where an interrupted render puts what it finished. A name that
 // would then be too long for the file system loses the end of its stem instead.
 std::string partialPath(const std::string& output) {
@@ -490,24 +461,21 @@ void addRunMetadata(Image& image, const RenderArgs& args, const RenderResult& re
 // Reads the part to resume and checks it belongs to this job, window and range; "" or why not.
 std::string readResumePart(const std::string& path, const Image& job, const PixelWindow& window, uint32_t first,
                            uint32_t last, bool firstHitLayers, Image& part, Film& film) {
-    std::string error = readPart(path, part, film);
+    PartInfo info;
+    std::string error = readPart(path, part, film, info);
     if (!error.empty()) return "--resume: " + error;
     std::string field, mine, theirs;
     if (jobMismatch(job, part, field, mine, theirs))
         return "--resume " + path + ": it is a part of another job: its " + field + " is \"" + theirs +
                "\", this command's is \"" + mine + "\"";
-    if (attributeText(part, "pt:samplesFirst") != std::to_string(first) || attributeText(part, "pt:samplesLast") != std::to_string(last))
-        return "--resume " + path + ": it holds samples " + attributeText(part, "pt:samplesFirst") + ":" +
-               attributeText(part, "pt:samplesLast") + ", this command renders " + std::to_string(first) + ":" +
-               std::to_string(last) + " (give the same --samples)";
-    int px = part.fullWidth > 0 ? part.x : 0, py = part.fullWidth > 0 ? part.y : 0;
-    if (px != window.x0 || py != window.y0 || part.width != window.width() || part.height != window.height())
+    if (info.first != first || info.last != last)
+        return "--resume " + path + ": it holds samples " + std::to_string(info.first) + ":" + std::to_string(info.last) +
+               ", this command renders " + std::to_string(first) + ":" + std::to_string(last) + " (give the same --samples)";
+    if (info.x0 != window.x0 || info.y0 != window.y0 || info.x1 != window.x1 || info.y1 != window.y1)
         return "--resume " + path + ": its pixels are not this command's --crop";
     if (firstHitLayers && !film.hasFirstHitLayers())
         return "--resume " + path + ": it has no first-hit sums, so --aov albedo, normal and depth cannot go on from it "
                "(resume without them)";
-    for (size_t p = 0; p < size_t(film.width()) * film.height(); ++p)
-        if (film.count(p) > last - first) return "--resume " + path + ": a pixel holds more samples than its range";
     return "";
 }
 
@@ -535,7 +503,9 @@ int renderCommand(int argc, char** argv) {
     }
 
     RenderProgress progress;
-    installStopHandlers(progress.cancel);
+    // Until the render starts a signal quits at once (there is nothing to keep); from then on it
+    // stops the render, whose finished samples are written.
+    installStopHandlers("pt: interrupted before rendering began; nothing was written\n");
 
     auto t0 = std::chrono::steady_clock::now();
     Scene scene;
@@ -655,6 +625,7 @@ int renderCommand(int argc, char** argv) {
     }
     double bvhSeconds = secondsSince(t1);
 
+    setStopTarget(&progress.cancel);
     ProgressLine line(progress, last - first, !args.quiet && isatty(STDERR_FILENO));
     std::optional<RenderResult> rendered;
     try {
@@ -683,7 +654,7 @@ int renderCommand(int argc, char** argv) {
 
     if (result.cancelled) {
         // Never replace OUT with a partial image: the finished samples go beside it.
-        int status = 128 + int(gSignal ? gSignal : SIGINT);
+        int status = 128 + (stopSignal() ? stopSignal() : SIGINT);
         uint32_t done = result.film.minSamples();
         if (done == 0) {
             std::fprintf(err, "pt: interrupted before every pixel had a sample; nothing written\n");
@@ -708,7 +679,7 @@ int renderCommand(int argc, char** argv) {
     std::error_code ec;
     if (!args.resume.empty() && std::filesystem::equivalent(args.resume, partial, ec)) std::filesystem::remove(partial, ec);
 
-    if (gSignal != 0)
+    if (stopSignal() != 0)
         std::fprintf(err, "pt: the signal came after the last sample; the whole image was written\n");
     // A few discarded samples are rounding; many mean light lost somewhere: say so, not just count.
     uint64_t samples = uint64_t(window.width()) * window.height() * result.film.minSamples();

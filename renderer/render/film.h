@@ -41,7 +41,7 @@ public:
     std::vector<float> normal() const; // mean over samples, renormalized; 0 where nothing was hit
     std::vector<float> depth() const;  // mean distance over samples that hit; +inf where none did
 
-    // The raw sums of one pixel, for parts (render/film_image.h) and merging them.
+    // The raw sums of one pixel, for parts (render/film_part.h) and merging them.
     uint32_t count(size_t pixel) const { return count_[pixel]; }
     const glm::dvec3& sum(size_t pixel) const { return sum_[pixel]; }
     const glm::dvec3& sumSq(size_t pixel) const { return sumSq_[pixel]; }
