@@ -524,8 +524,10 @@ int renderCommand(int argc, char** argv) {
         try {
             std::string warning;
             scene.environment = Environment{}; // replaces the MTL's environment, a sky included
-            scene.environment.map = std::make_shared<const EnvironmentMap>(
+            auto map = std::make_shared<const EnvironmentMap>(
                 readEnvironmentMap(args.env, float(args.envRotate), float(args.envScale), warning));
+            scene.environment.map = map;
+            scene.sources.push_back({args.env, map->sourceHash});
             if (!warning.empty()) warnings.add(warning);
         } catch (const LoadError& e) {
             std::fprintf(err, "pt: error: %s\n", e.what());
@@ -563,16 +565,15 @@ int renderCommand(int argc, char** argv) {
             if (aspect >= 1.0f) args.height = std::max(1, int(std::lround(512.0f / aspect)));
             else args.width = std::max(1, int(std::lround(512.0f * aspect)));
         }
-        std::vector<std::string> inputs = scene.sources;
-        for (size_t i = 0; i < scene.textures->size(); ++i) inputs.push_back((*scene.textures)[int(i)].path);
-        if (!args.env.empty()) inputs.push_back(args.env);
+        std::vector<std::string> inputs;
+        for (const SourceFile& f : scene.sources) inputs.push_back(f.path);
         std::string problem = outputIsInput({args.output, partial}, inputs);
         // The partial may replace the part it resumes (read whole before rendering); OUT may not.
         if (problem.empty() && !args.resume.empty()) problem = outputIsInput({args.output}, {args.resume});
         // Created now, before any rendering: a folder that refuses it fails here, not in an hour.
         if (problem.empty()) problem = output.open(args.output);
         if (!problem.empty()) throw UsageError(problem);
-        sceneHash = contentHash(inputs);
+        sceneHash = jobHash(scene.sources);
     } catch (const UsageError& e) {
         std::fprintf(err, "pt render: %s\n", e.what());
         return 2;

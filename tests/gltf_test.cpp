@@ -116,7 +116,11 @@ TEST(Gltf, LightsMatchTheirAnalyticRadianceOnAPlane) {
 TEST(Gltf, TexturesAreTheRightWayUp) {
     Scene scene = load(kGltf + "bin_and_image.gltf");
     ASSERT_EQ(scene.textures->size(), 1u);
-    EXPECT_NE(std::find(scene.sources.begin(), scene.sources.end(), kGltf + "bin_and_image.bin"), scene.sources.end());
+    for (const char* file : {"bin_and_image.gltf", "bin_and_image.bin", "checker.png"})
+        EXPECT_NE(std::find_if(scene.sources.begin(), scene.sources.end(),
+                               [&](const SourceFile& f) { return f.path == kGltf + file && f.hash != 0; }),
+                  scene.sources.end())
+            << file;
     scene.cameras = {lookAt({0, 0, 3}, {0, 0, 0}, 30)};
     RenderSettings s;
     s.maxDepth = 1;

@@ -199,7 +199,8 @@ TEST(EnvironmentMtl, BlockReadsTheMapBesideTheMtl) {
     const float lift = std::cos(kPi * 15.5f / 32.0f);
     Spectrum L = s.environment.map->radiance(glm::normalize(Vec3(0, lift, -1)));
     EXPECT_NEAR(L.y, 16.0f, 0.2f);
-    EXPECT_EQ(s.sources.back(), PT_SOURCE_DIR "/scenes/env_marker.exr");
+    EXPECT_EQ(s.sources.back().path, PT_SOURCE_DIR "/scenes/env_marker.exr");
+    EXPECT_EQ(s.sources.back().hash, s.environment.map->sourceHash);
 }
 
 TEST(EnvironmentMtl, ErrorsNameTheLine) {

@@ -69,6 +69,7 @@ struct ExternalFiles {
     std::string folder;                  // the .gltf's folder, as tinygltf joins it to a URI
     std::vector<uint64_t> bufferLengths; // byteLength of each buffer held in a file
     uint64_t bytesLeft;                  // what all of them may still take (many buffers may name one file)
+    std::vector<SourceFile> read;        // the files read, with the hash of their bytes
 };
 
 bool externalFileExists(const std::string& path, void* user) {
@@ -92,6 +93,7 @@ bool readExternalFile(std::vector<unsigned char>* out, std::string* err, const s
     std::string error = readRegularFile(path, std::min(largest, files.bytesLeft), *out);
     if (!error.empty() && err) *err += error + (largest > files.bytesLeft ? " (its buffers together may take half this machine's memory)" : "");
     files.bytesLeft -= std::min<uint64_t>(files.bytesLeft, out->size());
+    if (error.empty()) files.read.push_back({path, contentHash(out->data(), out->size())});
     return error.empty();
 }
 
@@ -403,10 +405,11 @@ private:
             read = readTextureFromMemory(gltf::bufferViewBytes(model_, img.bufferView, what + ", image " + std::to_string(image)),
                                          name, format, colour, t, error, budget, tooLarge);
         else if (inFile)
-            read = readTexture(name, colour, t, error, budget, tooLarge); // the header first, then the texels
+            read = readTexture(name, colour, t, error, budget, tooLarge); // the file's bytes, hashed
         else
             throw LoadError(what + ": image " + std::to_string(image) + " has no data");
         if (!read) throw LoadError(what + ": image " + std::to_string(image) + ": " + error);
+        if (t.sourceHash != 0) scene_.sources.push_back({name, t.sourceHash});
         int cached = scene_.textures->add(std::move(t));
         decoded_[key] = cached;
         return cached;
@@ -769,10 +772,8 @@ Scene loadGltfFromMemory(const std::string& path, const std::vector<unsigned cha
 
     Scene scene;
     scene.path = path;
-    scene.sources.push_back(path);
-    for (const tinygltf::Buffer& b : model.buffers)
-        if (!b.uri.empty() && b.uri.rfind("data:", 0) != 0)
-            scene.sources.push_back((std::filesystem::path(path).parent_path() / decodeUri(b.uri)).string());
+    scene.sources.push_back({path, contentHash(bytes.data(), bytes.size())});
+    scene.sources.insert(scene.sources.end(), files.read.begin(), files.read.end());
     GltfReader(path, model, images, scene, warnings).read();
     return scene;
 }

@@ -36,4 +36,11 @@ std::string readRegularFile(const std::string& path, uint64_t maxBytes, std::vec
     return error;
 }
 
+uint64_t contentHash(const void* data, size_t size) {
+    uint64_t h = 0xcbf29ce484222325ULL;
+    const unsigned char* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < size; ++i) h = (h ^ p[i]) * 0x100000001b3ULL;
+    return h;
+}
+
 } // namespace pt

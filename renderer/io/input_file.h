@@ -15,4 +15,8 @@ namespace pt {
 // "12884901888 bytes, more than the 4294967296 it may have".
 std::string readRegularFile(const std::string& path, uint64_t maxBytes, std::vector<unsigned char>& bytes);
 
+// A 64-bit hash (FNV-1a, about 1 GB/s) of a file's bytes as pt read them: the part of a render
+// job's identity (render/render_job.h) that says which content the file had.
+uint64_t contentHash(const void* data, size_t size);
+
 } // namespace pt

@@ -1,6 +1,7 @@
 #include "light/environment_map.h"
 
 #include "image/image_input.h"
+#include "io/input_file.h"
 
 #include "core/system.h"
 #include "scene/load_error.h"
@@ -61,8 +62,13 @@ EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees
     if (!std::filesystem::is_regular_file(path, ec))
         throw LoadError("environment map \"" + path + "\" " +
                         (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found"));
-    std::string error;
-    auto in = openImageFile(path, error);
+    // Read whole, then decoded from memory: the hash of these bytes is the map's part of the job's
+    // identity (a map renamed over while pt loads is not hashed anew).
+    std::vector<unsigned char> file;
+    std::string error = readRegularFile(path, uint64_t(textureMemoryBudget()), file);
+    if (!error.empty()) throw LoadError("cannot read environment map \"" + path + "\": " + error);
+    OIIO::Filesystem::IOMemReader reader(file.data(), file.size());
+    auto in = openImageMemory(file, reader, path, error);
     if (!in) throw LoadError("cannot read environment map \"" + path + "\": " + error);
     const OIIO::ImageSpec spec = in->spec();
     int w = spec.width, h = spec.height, nc = spec.nchannels;
@@ -78,6 +84,7 @@ EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees
 
     EnvironmentMap map;
     map.path = path;
+    map.sourceHash = contentHash(file.data(), file.size());
     map.width = w;
     map.height = h;
     map.setRotation(rotationDegrees * (kPi / 180.0f));

@@ -17,6 +17,7 @@ struct EnvironmentMap {
     int width = 0, height = 0;
     std::vector<float> rgb; // linear radiance, row 0 at the top (+y)
     float scale = 1.0f;     // multiplies every texel
+    uint64_t sourceHash = 0; // of the file's bytes it was decoded from (readEnvironmentMap)
 
     // Radians about +y, right-handed: the map turns with it. Its cosine and sine are kept, as
     // every lookup and light sample turns a direction.

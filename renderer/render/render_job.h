@@ -4,6 +4,7 @@
 #pragma once
 
 #include "image/image_io.h"
+#include "scene/scene.h"
 
 #include <string>
 #include <vector>
@@ -17,9 +18,9 @@ const std::vector<std::string>& jobFields();
 // is equal); false when they are one job.
 bool jobMismatch(const Image& a, const Image& b, std::string& field, std::string& valueA, std::string& valueB);
 
-// A 64-bit hash (16 hex digits) of the bytes of the given files, in order: the scene's content,
-// whatever path it is read from on each machine. Unreadable files hash as their name.
-std::string contentHash(const std::vector<std::string>& files);
+// The scene's content as 16 hex digits: a hash of its files' hashes (taken from the bytes pt
+// read, scene/scene.h), in order, whatever path each is read from on each machine.
+std::string jobHash(const std::vector<SourceFile>& files);
 
 // The metadata attribute `name` as text; "" when absent.
 std::string attributeText(const Image& image, const std::string& name);

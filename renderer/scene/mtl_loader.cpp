@@ -1,5 +1,7 @@
 #include "scene/mtl_loader.h"
 
+#include "io/input_file.h"
+
 #include "light/environment_map.h"
 #include "light/sky_environment.h"
 #include "texture/texture_io.h"
@@ -222,6 +224,7 @@ TextureMap MtlParser::loadTexture(std::string_view spec, std::string_view keywor
             if (tooLarge) throw LoadError(where + kw + ": " + error);
             return fallBack(error);
         }
+        scene.sources.push_back({full, tex.sourceHash});
         map.texture = cache.add(std::move(tex));
     }
     const Texture& tex = cache[map.texture];
@@ -325,7 +328,7 @@ void MtlParser::finishBlock() {
             throw LoadError(path, environment.fileLine, e.what());
         }
         if (!warning.empty()) warnings.add(path + ":" + std::to_string(environment.fileLine) + ": " + warning);
-        scene.sources.push_back(environment.file);
+        scene.sources.push_back({environment.file, scene.environment.map->sourceHash});
         break;
     }
     case Block::None: break;
@@ -558,7 +561,7 @@ void parseMtl(std::string_view text, const std::string& path, Scene& scene,
 void loadMtl(const std::string& path, Scene& scene,
              std::unordered_map<std::string, uint32_t>& materialIndex, Warnings& warnings) {
     std::string text = readTextFile(path);
-    scene.sources.push_back(path);
+    scene.sources.push_back({path, contentHash(text.data(), text.size())});
     parseMtl(text, path, scene, materialIndex, warnings);
 }
 

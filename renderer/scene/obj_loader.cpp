@@ -1,5 +1,7 @@
 #include "scene/obj_loader.h"
 
+#include "io/input_file.h"
+
 #include "scene/mtl_loader.h"
 #include "scene/text_parser.h"
 
@@ -179,7 +181,7 @@ void ObjParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
 Scene parseObj(std::string_view text, const std::string& path, Warnings& warnings) {
     ObjParser parser(path, warnings);
     parser.scene.path = path;
-    parser.scene.sources.push_back(path);
+    parser.scene.sources.push_back({path, contentHash(text.data(), text.size())});
     LineReader lines(text, path);
     std::string_view line;
     while (lines.next(line)) {

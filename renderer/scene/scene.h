@@ -119,9 +119,17 @@ struct Environment {
     }
 };
 
+// A file a scene was made from, with the hash of the bytes pt read from it (io/input_file.h):
+// taken when they were read, so a file renamed over while pt loads cannot give a part the
+// identity of content it did not use.
+struct SourceFile {
+    std::string path;
+    uint64_t hash = 0;
+};
+
 struct Scene {
     std::string path; // file it was loaded from, for messages and metadata
-    std::vector<std::string> sources; // every file read: the scene and its MTLs (textures: TextureCache)
+    std::vector<SourceFile> sources; // every file read: the scene, its MTLs, buffers, textures and maps
 
     // Geometry. Each triangle corner has its own position, normal and uv index, as in OBJ.
     std::vector<Vec3> positions;

@@ -20,6 +20,7 @@ struct Texture {
     int width = 0, height = 0, channels = 0;
     std::vector<float> texels;
     float peak = 0.0f; // largest |texel|, set by TextureCache::add: what a map can multiply its factor by
+    uint64_t sourceHash = 0; // of the file's bytes it was decoded from (readTexture)
 
     bool hasAlpha() const { return channels == 2 || channels == 4; }
     double bytes() const { return double(texels.size()) * sizeof(float); }

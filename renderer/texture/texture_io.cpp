@@ -3,6 +3,7 @@
 #include "core/color.h"
 #include "core/system.h"
 #include "image/image_input.h"
+#include "io/input_file.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -91,11 +92,27 @@ bool readTexture(const std::string& path, bool colour, Texture& texture, std::st
         error = "texture \"" + path + "\" " + (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found");
         return false;
     }
-    auto in = openImageFile(path, error);
+    // Read whole, then decoded from memory: the hash of these bytes is the texture's part of the
+    // job's identity. A file holds no fewer bytes than its texels take, so the budget bounds it.
+    std::vector<unsigned char> bytes;
+    uint64_t size = std::filesystem::file_size(path, ec);
+    if (!ec && double(size) > budgetBytes) {
+        tooLarge = true;
+        error = "texture \"" + path + "\" is too large: its file of " + shortNumber(double(size) / 1e9) + " GB is beyond the " +
+                shortNumber(std::max(0.0, budgetBytes) / 1e9) + " GB left for textures (a quarter of this machine's memory)";
+        return false;
+    }
+    if (std::string readError = readRegularFile(path, ec ? 0 : size, bytes); !readError.empty()) {
+        error = "cannot read texture \"" + path + "\": " + readError;
+        return false;
+    }
+    OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+    auto in = openImageMemory(bytes, reader, path, error);
     if (!in) {
         error = "cannot read texture \"" + path + "\": " + error;
         return false;
     }
+    texture.sourceHash = contentHash(bytes.data(), bytes.size());
     return decodeTexture(*in, path, colour, texture, error, budgetBytes, tooLarge);
 }
 
