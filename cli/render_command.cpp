@@ -50,7 +50,8 @@ options (default in brackets):
   -spp, --spp N          samples per pixel [16]
   --res WxH              image size in pixels [512x512; a glTF camera's aspect ratio
                          gives 512 across its longer side]
-  --camera NAME|INDEX    camera by name, or by 0-based index in file order [0]
+  --camera NAME|INDEX    camera by name, or by 0-based index in file order; a name two
+                         cameras share, or that is the index of another, is refused [0]
   --threads N            worker threads; 0 uses every hardware thread, and more than the
                          machine has are cut to that many, with a warning [0]
   --seed S               random seed in [0, 2147483647]; the image depends only on it,
@@ -121,7 +122,7 @@ struct RenderArgs {
     int width = 512, height = 512;
     bool resGiven = false;
     double exposure = 0.0; // EV: the image is scaled by 2^exposure
-    std::string camera = "0";
+    std::string camera; // --camera as given; none: camera 0
     int threads = 0;
     RenderSettings settings;
     AovSelection aovs;
@@ -319,11 +320,24 @@ RenderArgs parseArgs(int argc, char** argv) {
     return r;
 }
 
+// --camera: a name or a 0-based index; none given is camera 0. A spec that names two cameras,
+// or names one camera and is the index of another, is refused rather than resolved silently.
 size_t pickCamera(const Scene& scene, const std::string& spec) {
+    if (spec.empty()) return 0;
+    std::vector<size_t> named;
     for (size_t i = 0; i < scene.cameras.size(); ++i)
-        if (scene.cameras[i].name == spec) return i;
-    bool numeric = !spec.empty() && spec.find_first_not_of("0123456789") == std::string::npos;
-    if (numeric && spec.size() < 9 && std::stoul(spec) < scene.cameras.size()) return std::stoul(spec);
+        if (scene.cameras[i].name == spec) named.push_back(i);
+    bool numeric = spec.find_first_not_of("0123456789") == std::string::npos && spec.size() < 9;
+    size_t index = numeric ? std::stoul(spec) : scene.cameras.size();
+    bool isIndex = index < scene.cameras.size();
+    if (named.size() > 1)
+        throw UsageError("--camera " + spec + ": cameras " + std::to_string(named[0]) + " and " + std::to_string(named[1]) +
+                         " are both named \"" + spec + "\"; give the index of the one to render");
+    if (named.size() == 1 && isIndex && named[0] != index)
+        throw UsageError("--camera " + spec + ": camera " + std::to_string(named[0]) + " is named \"" + spec + "\", and camera " +
+                         spec + " is another; rename one of them");
+    if (named.size() == 1) return named[0];
+    if (isIndex) return index;
     std::string names;
     for (size_t i = 0; i < scene.cameras.size(); ++i)
         names += (i ? ", " : "") + std::to_string(i) + " \"" + scene.cameras[i].name + "\"";
@@ -401,7 +415,7 @@ const char* name(SamplerKind k) { return k == SamplerKind::Sobol ? "sobol" : "ra
 
 // Every option that changes the image, so that a file says how to make it again.
 // The job's fields (render/render_job.h) and what else describes the scene and its options.
-void addJobMetadata(Image& image, const RenderArgs& args, const Scene& scene, const std::string& camera,
+void addJobMetadata(Image& image, const RenderArgs& args, const Scene& scene, size_t cameraIndex,
                     const std::string& sceneHash) {
     auto text = [&](const char* k, const std::string& v) { image.metadata.push_back(ImageAttribute::string(k, v)); };
     auto integer = [&](const char* k, long long v) { image.metadata.push_back(ImageAttribute::integerValue(k, v)); };
@@ -415,7 +429,8 @@ void addJobMetadata(Image& image, const RenderArgs& args, const Scene& scene, co
     text("pt:sceneHash", sceneHash);
     integer("pt:fullWidth", args.width);
     integer("pt:fullHeight", args.height);
-    text("pt:camera", camera);
+    text("pt:camera", scene.cameras[cameraIndex].name);
+    integer("pt:cameraIndex", (long long)cameraIndex); // two cameras may share a name
     if (const auto& preetham = scene.environment.preetham) { // from --sky or the MTL
         const SkyParameters* sky = &preetham->parameters();
         const Vec3& d = sky->sunDirection;
@@ -599,7 +614,7 @@ int renderCommand(int argc, char** argv) {
         window = PixelWindow{int(args.crop[0]), int(args.crop[1]), int(args.crop[2]), int(args.crop[3])};
     }
     Image job; // the job's fields, compared with a part to resume and written into the output
-    addJobMetadata(job, args, scene, scene.cameras[cameraIndex].name, sceneHash);
+    addJobMetadata(job, args, scene, cameraIndex, sceneHash);
     Image resumeImage;
     Film resumeFilm(0, 0);
     if (!args.resume.empty()) {

@@ -8,7 +8,7 @@ namespace pt {
 
 const std::vector<std::string>& jobFields() {
     static const std::vector<std::string> fields = {
-        "pt:version",   "pt:sceneHash",   "pt:fullWidth",   "pt:fullHeight",  "pt:camera",     "pt:sppRequested",
+        "pt:version",   "pt:sceneHash",   "pt:fullWidth",   "pt:fullHeight",  "pt:camera",     "pt:cameraIndex", "pt:sppRequested",
         "pt:seed",      "pt:maxDepth",    "pt:sampler",     "pt:lightSampling", "pt:lightChoice", "pt:hemisphere",
         "pt:clamp",     "pt:exposure",    "pt:envRotate",   "pt:envScale",    "pt:environment", "pt:sunDirection",
         "pt:turbidity", "pt:skyScale",

@@ -182,6 +182,12 @@ void completeScene(Scene& scene, Warnings& warnings) {
                                           : ": no camera defined; framing the whole scene from +z (add a newcamera "
                                             "block to the MTL to choose the view)"));
     }
+    for (size_t i = 0; i < scene.cameras.size(); ++i)
+        for (size_t j = 0; j < i; ++j)
+            if (scene.cameras[i].name == scene.cameras[j].name)
+                warnings.once("camera name:" + scene.cameras[i].name,
+                              path + ": cameras " + std::to_string(j) + " and " + std::to_string(i) + " are both named \"" +
+                                  scene.cameras[i].name + "\"; --camera picks them by index");
     size_t degenerate = 0;
     for (const glm::uvec3& tri : scene.triPositions) {
         const Vec3 &a = scene.positions[tri[0]], &b = scene.positions[tri[1]], &c = scene.positions[tri[2]];
