@@ -165,6 +165,55 @@ for delay in 0.00 0.02 0.05 0.1 0.2 4; do
       fail "second_sigint after $delay s: twice.partial.exr is not a whole image"
   fi
 done
+
+# 8. A signal before rendering begins (a scene still loading) quits at once: nothing is written,
+# no temporary file is left, and the message says the render never began (issue 24: pt went on
+# loading and building the BVH, then said it was interrupted while rendering).
+/usr/bin/python3 -c "
+n = 1000
+print('mtllib $(dirname "$scene")/cornell_box.mtl')
+print('\n'.join('v %d %d 0' % (i % n, i // n) for i in range(n * n)))
+print('\n'.join('f %d %d %d' % (i + 1, i + 2, i + n + 1) for i in range(n * n - n - 1)))" > big.obj
+"$pt" render big.obj -spp 1 --res 8x8 -q -o loading.exr 2> loading.txt &
+pid=$!
+# Signalled once pt has read the scene's 34 MB and parses them (a second more with the BVH): its
+# shared libraries take half a second to load, and before main no handler is installed.
+for i in $(seq 1 1000); do
+  read=$(awk '/^rchar/ {print $2}' /proc/$pid/io 2>/dev/null)
+  [[ -z "$read" || $read -gt 30000000 ]] && break
+  sleep 0.01
+done
+kill -TERM $pid
+start=$(date +%s%N)
+wait $pid
+status=$?
+(( ($(date +%s%N) - start) / 1000000 < 2000 )) || fail "signal_while_loading: took more than 2 s to stop"
+[[ $status -eq 143 ]] || fail "signal_while_loading: exit $status, expected 143"
+grep -q "interrupted before rendering began; nothing was written" loading.txt || fail "signal_while_loading: $(cat loading.txt)"
+[[ -e loading.exr || -e loading.partial.exr ]] && fail "signal_while_loading: wrote an image"
+no_temporaries . "signal_while_loading"
+
+# 9. pt merge stopped by a signal while it writes: no temporary file and no output (it left
+# .OUT.tmp-PID behind before it handled signals).
+"$pt" render "$scene" -spp 2 --res 1536x1536 --max-depth 1 --samples 0:1 -q -o big_a.exr > /dev/null
+"$pt" render "$scene" -spp 2 --res 1536x1536 --max-depth 1 --samples 1:2 -q -o big_b.exr > /dev/null
+for sig in INT TERM; do
+  "$pt" merge big_a.exr big_b.exr --aov variance -o merged_$sig.exr 2> merge_$sig.txt &
+  pid=$!
+  for i in $(seq 1 3000); do ls -a | grep -q "^\.merged_$sig\.exr\.tmp-" && break; sleep 0.005; done
+  kill -$sig $pid
+  wait $pid
+  status=$?
+  want=$([[ $sig == INT ]] && echo 130 || echo 143)
+  if [[ $status -eq 0 ]]; then
+    echo "note: merge_signal_$sig: the merge finished before the signal; nothing to check"
+    continue
+  fi
+  [[ $status -eq $want ]] || fail "merge_signal_$sig: exit $status, expected $want"
+  grep -q "pt merge: interrupted; nothing was written" merge_$sig.txt || fail "merge_signal_$sig: $(cat merge_$sig.txt)"
+  [[ -e merged_$sig.exr ]] && fail "merge_signal_$sig: wrote merged_$sig.exr"
+  no_temporaries . "merge_signal_$sig"
+done
 set +m
 
 if [[ $failures -gt 0 ]]; then
