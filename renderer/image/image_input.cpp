@@ -18,7 +18,7 @@ bool startsWith(const unsigned char* head, size_t size, const char* magic, size_
 std::unique_ptr<OIIO::ImageInput> openAs(const std::string& format, const std::string& name, OIIO::Filesystem::IOProxy* proxy,
                                          std::string& error) {
     if (format.empty()) {
-        error = "not an image file pt reads (its first bytes are those of none of " + std::string(kKnownFormats) + ")";
+        error = unknownImageFormat();
         return nullptr;
     }
     auto in = OIIO::ImageInput::create(format);
@@ -58,11 +58,19 @@ std::string imageFormatOf(const unsigned char* head, size_t size, const std::str
     return "";
 }
 
-std::unique_ptr<OIIO::ImageInput> openImageFile(const std::string& path, std::string& error) {
+std::string imageFormatOfFile(const std::string& path) {
     unsigned char head[16] = {};
     std::ifstream file(path, std::ios::binary);
     file.read(reinterpret_cast<char*>(head), sizeof head);
-    return openAs(imageFormatOf(head, size_t(file.gcount()), path), path, nullptr, error);
+    return imageFormatOf(head, size_t(file.gcount()), path);
+}
+
+std::string unknownImageFormat() {
+    return "not an image file pt reads (its first bytes are those of none of " + std::string(kKnownFormats) + ")";
+}
+
+std::unique_ptr<OIIO::ImageInput> openImageFile(const std::string& path, std::string& error) {
+    return openAs(imageFormatOfFile(path), path, nullptr, error);
 }
 
 std::unique_ptr<OIIO::ImageInput> openImageMemory(const std::vector<unsigned char>& bytes,

@@ -19,6 +19,13 @@ namespace pt {
 // `name`; "" when pt does not read it.
 std::string imageFormatOf(const unsigned char* head, size_t size, const std::string& name);
 
+// The format of the file at `path` from its first bytes (see imageFormatOf), read alone: a file
+// of gigabytes is judged before any more of it is read.
+std::string imageFormatOfFile(const std::string& path);
+
+// The message for a file whose format imageFormatOf does not know.
+std::string unknownImageFormat();
+
 // Opens the regular file `path`. Null with `error` set ("not an image file pt reads ...", or the
 // plugin's message) when it cannot.
 std::unique_ptr<OIIO::ImageInput> openImageFile(const std::string& path, std::string& error);

@@ -64,6 +64,8 @@ EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees
                         (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found"));
     // Read whole, then decoded from memory: the hash of these bytes is the map's part of the job's
     // identity (a map renamed over while pt loads is not hashed anew).
+    if (imageFormatOfFile(path).empty()) // before reading the rest: it may be gigabytes of zeros
+        throw LoadError("cannot read environment map \"" + path + "\": " + unknownImageFormat());
     std::vector<unsigned char> file;
     std::string error = readRegularFile(path, uint64_t(textureMemoryBudget()), file);
     if (!error.empty()) throw LoadError("cannot read environment map \"" + path + "\": " + error);

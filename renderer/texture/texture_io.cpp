@@ -92,6 +92,10 @@ bool readTexture(const std::string& path, bool colour, Texture& texture, std::st
         error = "texture \"" + path + "\" " + (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found");
         return false;
     }
+    if (imageFormatOfFile(path).empty()) { // before reading the rest: it may be gigabytes of zeros
+        error = "cannot read texture \"" + path + "\": " + unknownImageFormat();
+        return false;
+    }
     // Read whole, then decoded from memory: the hash of these bytes is the texture's part of the
     // job's identity. A file holds no fewer bytes than its texels take, so the budget bounds it.
     std::vector<unsigned char> bytes;
