@@ -60,6 +60,10 @@ public:
             if (const Json* list = array(root_, top, key))
                 for (const Json& e : *list)
                     if (!e.is_string()) fail(top, key, "must be an array of strings, found " + shown(e));
+        // The document's arrays first: every reference below counts on them.
+        for (const char* key : {"accessors", "animations", "buffers", "bufferViews", "cameras", "images", "materials",
+                                "meshes", "nodes", "samplers", "scenes", "skins", "textures"})
+            array(root_, top, key);
         index(root_, top, "scene", "scenes");
         lights_ = nullptr;
         if (const Json* ext = extension(root_, top, "KHR_lights_punctual")) {
@@ -81,7 +85,7 @@ public:
                 if (bytes != length)
                     fail(at, "uri", "holds " + std::to_string(bytes) + " bytes of base64 data; byteLength says " + std::to_string(length));
             } else {
-                facts_.fileBufferLengths.push_back(length);
+                facts_.fileBuffers.push_back({bufferIndex - 1, b.at("uri").get<std::string>(), length});
             }
         });
         forEach("bufferViews", "bufferView", [&](const Json& v, const At& at) {
@@ -273,7 +277,7 @@ private:
         std::string noun = nounOf(array);
         size_t n = countOf(array);
         if (v.get<uint64_t>() < n) return;
-        std::string where = at.object + ": " + (at.prefix.empty() && key == noun ? "" : at.prefix + key + ": ");
+        std::string where = (at.object.empty() ? "" : at.object + ": ") + (at.prefix.empty() && key == noun ? "" : at.prefix + key + ": ");
         throw LoadError(path_ + ": " + where + noun + " " + shown(v) + " does not exist (the file has " + std::to_string(n) + ")");
     }
     // An index of an object of the document's array `array`.

@@ -29,7 +29,12 @@ void checkJsonDepth(std::string_view json, const std::string& path);
 
 // What the loader needs of the document beyond what tinygltf keeps.
 struct DocumentFacts {
-    std::vector<uint64_t> fileBufferLengths; // byteLength of each buffer held in a file of its own
+    struct FileBuffer {
+        size_t index;     // of the buffer
+        std::string uri;  // as written (percent-encoded)
+        uint64_t length;  // its byteLength
+    };
+    std::vector<FileBuffer> fileBuffers; // the buffers held in files of their own
 };
 
 // Parses `json` and checks it against the schema (types, array lengths, ranges the specification

@@ -13,6 +13,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -387,7 +388,8 @@ private:
         auto key = std::make_pair(image, colour);
         if (auto it = decoded_.find(key); it != decoded_.end()) return it->second;
         const tinygltf::Image& img = model_.images[size_t(image)];
-        bool inFile = img.bufferView < 0 && img.uri.rfind("data:", 0) != 0;
+        // tinygltf keeps the URI of a file image only (a data URI's bytes came through keepImageBytes).
+        bool inFile = img.bufferView < 0 && !img.uri.empty() && img.uri.rfind("data:", 0) != 0;
         std::string name = inFile ? (std::filesystem::path(path_).parent_path() / decodeUri(img.uri)).string()
                                   : path_ + " image " + std::to_string(image);
         std::string format = img.mimeType == "image/jpeg" ? ".jpg" : img.mimeType == "image/png" ? ".png" : "";
@@ -739,16 +741,29 @@ Scene loadGltfFromMemory(const std::string& path, const std::vector<unsigned cha
                          Warnings& warnings) {
     if (bytes.size() > 0xffffffffu) throw LoadError(path + ": larger than the 4 GB a glTF file can address");
     gltf::DocumentFacts facts = gltf::checkGltfDocument(gltf::gltfJson(bytes, binary, path), binary, path);
-    for (uint64_t length : facts.fileBufferLengths)
-        if (double(length) > 0.5 * physicalMemoryBytes())
-            throw LoadError(path + ": a buffer of " + std::to_string(length) + " bytes is more than half this machine's memory");
+    // Each buffer's file, looked at before tinygltf reads it: a regular file of the declared size,
+    // and all of them within half the memory. (The callbacks below refuse anything else again.)
+    std::vector<uint64_t> lengths;
+    double total = 0.0;
+    for (const auto& b : facts.fileBuffers) {
+        std::string file = (std::filesystem::path(path).parent_path() / decodeUri(b.uri)).string();
+        std::string what = path + ": buffer " + std::to_string(b.index) + ": \"" + file + "\" ";
+        struct stat st {};
+        if (stat(file.c_str(), &st) != 0) throw LoadError(what + "cannot be opened: " + std::strerror(errno));
+        if (!S_ISREG(st.st_mode)) throw LoadError(what + "is not a regular file (a folder, device or pipe)");
+        if (uint64_t(st.st_size) != b.length)
+            throw LoadError(what + "has " + std::to_string(st.st_size) + " bytes; its byteLength says " + std::to_string(b.length));
+        if ((total += double(b.length)) > 0.5 * physicalMemoryBytes())
+            throw LoadError(what + "brings the buffers to " + shortNumber(total / 1e9) + " GB, more than half this machine's memory");
+        lengths.push_back(b.length);
+    }
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
     std::vector<std::vector<unsigned char>> images;
     loader.SetImageLoader(keepImageBytes, &images);
     std::string base = std::filesystem::path(path).parent_path().string();
     if (base.empty()) base = ".";
-    ExternalFiles files{base, facts.fileBufferLengths, uint64_t(0.5 * physicalMemoryBytes())};
+    ExternalFiles files{base, lengths, uint64_t(0.5 * physicalMemoryBytes())};
     loader.SetFsCallbacks(tinygltf::FsCallbacks{externalFileExists, pathAsGiven, readExternalFile, writeNothing, &files});
     std::string err, warn;
     bool ok = false;
