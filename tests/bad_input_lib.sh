@@ -20,7 +20,7 @@ check() {
   shift 3
   mkdir -p out
   local output got
-  output=$(timeout 120 "$pt" "$@" 2>&1)
+  output=$(timeout -k 5 120 "$pt" "$@" 2>&1) # -k: pt blocked in open() on a FIFO ignores TERM
   got=$?
   if [[ $got -ne $status ]]; then
     fail "$name: exit $got, expected $status; output: $(echo "$output" | head -3)"

@@ -296,6 +296,129 @@ check resume_not_part 1 'whole.exr: it is not a part' render m.obj "${split[@]}"
 check resume_no_layers 1 'it has no first-hit sums, so --aov albedo, normal and depth cannot go on from it' render m.obj "${split[@]}" --samples 0:4 --aov albedo --resume part_a.exr -o out/a.exr
 check resume_missing 1 '--resume: cannot read "nowhere.exr"' render m.obj "${split[@]}" --resume nowhere.exr -o out/a.exr
 
+# Issue 24: the newer options and inputs within the range pt renders correctly. Each is refused
+# with its limit named, or warned about and counted; never an infinity or NaN written silently.
+check exposure_64 2 'option --exposure: 64 is out of range [-32, 32]' render m.obj --exposure 64 -o out/a.exr
+check exposure_nan 2 'option --exposure' render m.obj --exposure nan -o out/a.exr
+printf 'newmtl Hot\nKe 1e18 1e18 1e18\n' > hot18.mtl
+printf 'mtllib camera.mtl\nmtllib hot18.mtl\n%susemtl Hot\nf 1 2 3\n' "$tri" > hot18.obj
+check exposure_overflow_warns 0 "values of the image and its layers pass float's range (at --exposure 20)" \
+  render hot18.obj --exposure 20 --aov variance -spp 2 --res 8x8 -o hot18.exr
+[[ $(oiiotool --stats hot18.exr | grep -c "InfCount: 0 0 0 0 0 0") -eq 1 ]] || fail "exposure_overflow_warns: infinities written"
+"$pt" render hot18.obj --exposure 20 -spp 2 --res 8x8 -q -o hot18.png > /dev/null
+[[ $(oiiotool --stats hot18.png | grep "Stats Max") == *"255 255 255"* ]] || fail "png_overflow: the emitter is not white"
+oiiotool --pattern constant:color=3e38,1,1 8x4 3 -d float -o huge_env.exr
+check env_scale_1e30 1 'its brightest texel, times its scale 1e+30, is a radiance of 1e+30, beyond the 1e18' \
+  render m.obj --env square_env.exr --env-scale 1e30 -spp 1 --res 8x8 -o out/a.exr
+check env_texel_3e38 1 'environment map "huge_env.exr": its brightest texel, times its scale 1, is a radiance of 3e+38' \
+  render m.obj --env huge_env.exr -spp 1 --res 8x8 -o out/a.exr
+check sky_scale_1e30 2 "option --sky-scale: 1e+30 makes the sky's peak radiance (the sun's disk where it is up)" \
+  render m.obj --sky --sky-scale 1e30 -spp 1 --res 8x8 -o out/a.exr
+check sky_scale_sun_down 2 "option --sky-scale: 1e+25 makes the sky's peak radiance" \
+  render m.obj --sky --sun-elevation -20 --sky-scale 1e25 -spp 1 --res 8x8 -o out/a.exr
+printf 'newenvironment E\nenvmap square_env.exr\nenvscale 3e38\n' > envscale.mtl
+printf 'mtllib envscale.mtl\n%sf 1 2 3\n' "$tri" > envscale.obj
+check mtl_envscale_3e38 1 'envscale.mtl:2: environment map "square_env.exr": its brightest texel, times its scale 3e+38' $(render envscale.obj es)
+printf 'newenvironment Day\nenvsky\nskyscale 3e38\n' > skyscale.mtl
+printf 'mtllib skyscale.mtl\n%sf 1 2 3\n' "$tri" > skyscale.obj
+check mtl_skyscale_3e38 1 "skyscale.mtl:3: skyscale 3e+38: the sky's peak radiance" $(render skyscale.obj ss)
+# Float textures: a texel that is not finite is said (the MTL then falls back to its plain colour,
+# as for any unreadable map); a map whose largest texel passes the factor's own limit is refused.
+oiiotool --pattern constant:color=inf,1,1 4x4 3 -d float -o inf_tex.exr
+oiiotool --pattern constant:color=1e5,1,1 4x4 3 -d float -o bright_tex.exr
+maps_case inf_texel 0 'map_Kd: texture "inf_tex.exr": texel (0, 0) channel 0 is inf; a colour must be finite and not negative' 'map_Kd inf_tex.exr'
+maps_case bright_texel 1 'its diffuse or base colour texture "bright_tex.exr" reaches 100000, which times its factor 0.5 passes the reflectance limit 10' 'map_Kd bright_tex.exr'
+truncate -s 8G sparse_tex.png
+start=$(date +%s%N)
+maps_case sparse_8GB_texture 0 'cannot read texture "sparse_tex.png": not an image file pt reads' 'map_Kd sparse_tex.png'
+(( ($(date +%s%N) - start) / 1000000 < 10000 )) || fail "sparse_8GB_texture: took more than 10 s (OpenImageIO tried every reader on it)"
+rm -f sparse_tex.png
+# Turbidity: one rule for the command line and the MTL (1.7 was refused on one and taken by the other).
+check turbidity_1.7 0 '8x8, 1 spp' render m.obj --sky --turbidity 1.7 -spp 1 --res 8x8 -o out/a.exr
+check turbidity_below 2 "option --turbidity: 1.69 is out of range [1.7, 10], the range of Preetham et al.'s fit" render m.obj --sky --turbidity 1.69 -o out/a.exr
+printf 'newenvironment Day\nenvsky\nturbidity 1.7\n' > sky17.mtl
+printf 'mtllib camera.mtl\nmtllib sky17.mtl\n%sf 1 2 3\n' "$tri" > sky17.obj
+check mtl_turbidity_1.7 0 '8x8, 1 spp' render sky17.obj -spp 1 --res 8x8 -o out/a.exr
+printf 'newenvironment Day\nenvsky\nturbidity 1.69\n' > sky169.mtl
+printf 'mtllib sky169.mtl\n%sf 1 2 3\n' "$tri" > sky169.obj
+check mtl_turbidity_below 1 "sky169.mtl:3: turbidity: expected a value in [1.7, 10], the range of Preetham et al.'s fit" $(render sky169.obj t)
+# Cameras: a name two cameras share, or a name that is another camera's index, is refused.
+printf 'newcamera C\ncameraposition 0.3 0.3 3\ncameratarget 0.3 0.3 0\nnewcamera C\ncameraposition 0.3 0.3 2\ncameratarget 0.3 0.3 0\n' > twins.mtl
+printf 'mtllib twins.mtl\n%sf 1 2 3\n' "$tri" > twins.obj
+check camera_twins_warn 0 'cameras 0 and 1 are both named "C"; --camera picks them by index' render twins.obj -spp 1 --res 8x8 -o out/a.exr
+check camera_twins_by_name 2 '--camera C: cameras 0 and 1 are both named "C"; give the index' render twins.obj --camera C -spp 1 --res 8x8 -o out/a.exr
+check camera_twins_by_index 0 '8x8, 1 spp' render twins.obj --camera 1 -spp 1 --res 8x8 -o out/a.exr
+printf 'newcamera 1\ncameraposition 0.3 0.3 3\ncameratarget 0.3 0.3 0\nnewcamera Other\ncameraposition 0.3 0.3 2\ncameratarget 0.3 0.3 0\n' > numbered.mtl
+printf 'mtllib numbered.mtl\n%sf 1 2 3\n' "$tri" > numbered.obj
+check camera_name_is_an_index 2 '--camera 1: camera 0 is named "1", and camera 1 is another' render numbered.obj --camera 1 -spp 1 --res 8x8 -o out/a.exr
+"$pt" render numbered.obj -spp 1 --res 8x8 -q -o numbered.exr > /dev/null
+oiiotool --info -v numbered.exr | grep -q 'pt:cameraIndex: 0' || fail "camera_default: no --camera is not camera 0"
+
+# Parts that lie (issue 24): pt merge and --resume check every field against the others and
+# against the memory a merge needs, and every pixel's sums against its count.
+cat > editpart.py <<'PY'
+# editpart.py IN OUT OP...: a copy of part IN with OPs applied: attr:NAME=int|float|str:VALUE,
+# chan:CHANNEL=VALUE (every pixel), mul:CHANNEL=FACTOR, window:X,Y,FULLW,FULLH.
+import sys, numpy as np, OpenImageIO as oiio
+src, dst, ops = sys.argv[1], sys.argv[2], sys.argv[3:]
+inp = oiio.ImageInput.open(src)
+spec = inp.spec()
+px = np.array(inp.read_image(oiio.FLOAT)).reshape(spec.height, spec.width, spec.nchannels)
+inp.close()
+names, out = list(spec.channelnames), oiio.ImageSpec(spec)
+for op in ops:
+    kind, arg = op.split(':', 1)
+    if kind == 'attr':
+        name, typed = arg.split('=', 1)
+        t, v = typed.split(':', 1)
+        out.erase_attribute(name)
+        if t == 'int': out.attribute(name, oiio.TypeDesc('int'), int(v))
+        elif t == 'float': out.attribute(name, oiio.TypeDesc('float'), float(v))
+        else: out.attribute(name, v)
+    elif kind in ('chan', 'mul'):
+        name, v = arg.split('=')
+        c = names.index(name)
+        px[:, :, c] = float(v) if kind == 'chan' else px[:, :, c] * float(v)
+o = oiio.ImageOutput.create(dst)
+o.open(dst, out) and o.write_image(np.ascontiguousarray(px, dtype=np.float32)) and o.close() or sys.exit(o.geterror())
+PY
+lie() { /usr/bin/python3 editpart.py part_a.exr "$1" "${@:2}" || fail "editpart $1"; }
+lie lie_range.exr attr:pt:samplesFirst=int:5
+check merge_first_past_last 1 'lie_range.exr: pt:samplesLast is 4; expected an integer in [6, 8]' merge lie_range.exr -o out/m.exr
+lie lie_count.exr chan:ptCount.N=8
+check merge_count_past_range 1 'lie_count.exr: pixel (0, 0) holds 8 samples; its range 0:4 has 4' merge lie_count.exr -o out/m.exr
+lie lie_empty.exr chan:ptCount.N=0
+check merge_sums_without_samples 1 'lie_empty.exr: pixel (0, 0): its sums' merge lie_empty.exr -o out/m.exr
+lie lie_negative.exr mul:ptSum.R=-1
+check merge_negative_sum 1 'cannot be those of 4 samples of radiance' merge lie_negative.exr -o out/m.exr
+lie lie_squares.exr chan:ptSumSq.G=-5
+check merge_negative_squares 1 'lie_squares.exr: pixel (0, 0): its sums' merge lie_squares.exr -o out/m.exr
+lie lie_big_text.exr attr:pt:samplesLast=str:99999999999999999999
+check merge_number_past_64_bits 1 'lie_big_text.exr: pt:samplesLast is "99999999999999999999"; expected an integer in [1, 8]' merge lie_big_text.exr -o out/m.exr
+lie lie_wrap.exr attr:pt:sppRequested=str:4294967304
+check merge_number_past_32_bits 1 'pt:sppRequested is "4294967304"; expected an integer in [1, 16777216]' merge lie_wrap.exr -o out/m.exr
+lie lie_minus.exr attr:pt:samplesFirst=str:-5
+check merge_negative_text 1 'pt:samplesFirst is "-5"; expected an integer in [0, 7]' merge lie_minus.exr -o out/m.exr
+lie lie_word.exr attr:pt:fullWidth=str:abc
+check merge_word_for_number 1 'pt:fullWidth is "abc"; expected an integer in [1, 65536]' merge lie_word.exr -o out/m.exr
+lie lie_float.exr attr:pt:samplesLast=float:4.5
+check merge_fraction_for_integer 1 'pt:samplesLast is 4.5; expected an integer' merge lie_float.exr -o out/m.exr
+lie lie_wide.exr attr:pt:fullWidth=int:100000
+check merge_side_past_65536 1 'pt:fullWidth is 100000; expected an integer in [1, 65536]' merge lie_wide.exr -o out/m.exr
+lie lie_huge.exr attr:pt:fullWidth=int:65536 attr:pt:fullHeight=int:65536
+check merge_beyond_memory 1 'lie_huge.exr: pt:fullWidth x pt:fullHeight, 65536x65536, would take' merge lie_huge.exr -o out/m.exr
+lie lie_exposure.exr attr:pt:exposure=float:nan
+check merge_exposure_nan 1 'lie_exposure.exr: pt:exposure is nan; expected a number in [-32, 32]' merge lie_exposure.exr -o out/m.exr
+lie lie_seconds.exr attr:pt:renderSeconds=float:-1
+check merge_negative_seconds 1 'pt:renderSeconds is -1; expected a number in [0, 1e+12]' merge lie_seconds.exr -o out/m.exr
+"$pt" render m.obj "${split[@]}" --crop 0,0,8,16 -o part_crop.exr > /dev/null || fail "could not render part_crop.exr"
+/usr/bin/python3 editpart.py part_crop.exr lie_window.exr attr:pt:fullWidth=int:8
+check merge_window_disagrees 1 'its EXR display window is 16x16, not its pt:fullWidth x pt:fullHeight 8x16' merge lie_window.exr -o out/m.exr
+lie lie_attribute.exr attr:pt:camera=str:$(head -c 70000 /dev/zero | tr '\0' c)
+check merge_huge_attribute 1 'lie_attribute.exr: its attribute pt:camera holds 70000 bytes' merge lie_attribute.exr -o out/m.exr
+check merge_quiet_still_errs 1 'nowhere.exr' merge -q part_a.exr nowhere.exr -o out/m.exr
+check resume_count_past_range 1 '--resume: lie_count.exr: pixel (0, 0) holds 8 samples' render m.obj "${split[@]}" --samples 0:4 --resume lie_count.exr -o out/a.exr
+
 # A good image is never replaced by a failed render.
 "$pt" render m.obj -spp 1 --res 8x8 -q -o good.exr >/dev/null || fail "could not render good.exr"
 before=$(md5sum good.exr)
