@@ -1,5 +1,7 @@
 #include "image/image_input.h"
 
+#include "image/exr_header.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstring>
@@ -15,12 +17,17 @@ bool startsWith(const unsigned char* head, size_t size, const char* magic, size_
     return size >= length && std::memcmp(head, magic, length) == 0;
 }
 
+// Opens `name` (or `proxy`'s bytes) with `format`'s reader. `head` holds the first bytes of the
+// file (up to kMaxExrHeaderBytes), `fileSize` its length: an EXR header is checked on them first.
 std::unique_ptr<OIIO::ImageInput> openAs(const std::string& format, const std::string& name, OIIO::Filesystem::IOProxy* proxy,
-                                         std::string& error) {
+                                         const unsigned char* head, size_t headSize, uint64_t fileSize, std::string& error) {
     if (format.empty()) {
         error = unknownImageFormat();
         return nullptr;
     }
+    if (format == "openexr" && !(error = checkExrHeader(head, headSize, fileSize)).empty()) return nullptr;
+    static const bool chunked = OIIO::attribute("read_chunk", 16); // see kImageReadChunk
+    (void)chunked;
     auto in = OIIO::ImageInput::create(format);
     if (!in) {
         error = "this build of OpenImageIO has no " + format + " reader";
@@ -70,13 +77,19 @@ std::string unknownImageFormat() {
 }
 
 std::unique_ptr<OIIO::ImageInput> openImageFile(const std::string& path, std::string& error) {
-    return openAs(imageFormatOfFile(path), path, nullptr, error);
+    std::vector<unsigned char> head(kMaxExrHeaderBytes);
+    std::ifstream file(path, std::ios::binary);
+    file.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
+    head.resize(size_t(file.gcount()));
+    std::error_code ec;
+    uint64_t size = std::filesystem::file_size(path, ec);
+    return openAs(imageFormatOf(head.data(), head.size(), path), path, nullptr, head.data(), head.size(), ec ? 0 : size, error);
 }
 
 std::unique_ptr<OIIO::ImageInput> openImageMemory(const std::vector<unsigned char>& bytes,
                                                   OIIO::Filesystem::IOMemReader& reader, const std::string& name,
                                                   std::string& error) {
-    return openAs(imageFormatOf(bytes.data(), bytes.size(), name), name, &reader, error);
+    return openAs(imageFormatOf(bytes.data(), bytes.size(), name), name, &reader, bytes.data(), bytes.size(), bytes.size(), error);
 }
 
 } // namespace pt

@@ -15,6 +15,11 @@
 
 namespace pt {
 
+// How many scanlines OpenImageIO reads at a time in read_image: its own default of 256 makes a
+// buffer of 256 rows whatever the image's height (2.3 GB for a 4-row image 65528 wide with 34
+// channels). pt asks for 16, which it rounds up to 64.
+inline constexpr int kImageReadChunk = 64;
+
 // The OpenImageIO format name ("png", "openexr", ...) for a file starting with `head` and named
 // `name`; "" when pt does not read it.
 std::string imageFormatOf(const unsigned char* head, size_t size, const std::string& name);

@@ -137,21 +137,15 @@ std::string writeImage(OutputFile& file, const Image& image) {
     return file.commit(bytes.data(), bytes.size());
 }
 
-std::string readImage(const std::string& path, Image& image) {
-    struct stat st {};
-    if (stat(path.c_str(), &st) != 0) return "cannot read \"" + path + "\": " + std::strerror(errno);
-    if (S_ISDIR(st.st_mode)) return "cannot read \"" + path + "\": it is a folder, not an image";
-    if (!S_ISREG(st.st_mode)) return "cannot read \"" + path + "\": not a regular file (a device or pipe?)";
-    std::string error;
-    auto in = openImageFile(path, error);
-    if (!in) return "cannot read \"" + path + "\": " + error;
+// Reads the opened image `in`, which `path` names in messages, into `image`.
+static std::string decodeImage(OIIO::ImageInput* in, const std::string& path, Image& image, double budgetBytes) {
     const OIIO::ImageSpec spec = in->spec();
     int w = spec.width, h = spec.height, nc = spec.nchannels;
     if (w <= 0 || h <= 0 || nc <= 0) return "\"" + path + "\": empty image";
-    // The file's pixels as float, then their copy into rgb and the layers: twice the bytes.
-    double bytes = 2.0 * double(w) * double(h) * double(nc) * sizeof(float);
-    double physical = physicalMemoryBytes();
-    if (physical > 0 && bytes > 0.5 * physical)
+    // The file's pixels as float, then their copy into rgb and the layers: twice the bytes; and
+    // OpenImageIO's buffer of the scanlines it reads at a time (image_input.h: 64 at most).
+    double bytes = (2.0 * double(h) + double(kImageReadChunk)) * double(w) * double(nc) * sizeof(float);
+    if (bytes > budgetBytes)
         return "\"" + path + "\": its header declares " + std::to_string(w) + "x" + std::to_string(h) + " pixels of " +
                std::to_string(nc) + " channels, about " + std::to_string(int(bytes / 1e9 + 0.5)) +
                " GB to read, more than half this machine's memory";
@@ -220,6 +214,26 @@ std::string readImage(const std::string& path, Image& image) {
         else if (attr.type() == OIIO::TypeDesc::FLOAT) image.metadata.push_back(ImageAttribute::floatValue(attr.name().string(), attr.get_float()));
         else image.metadata.push_back(ImageAttribute::string(attr.name().string(), attr.get_string()));
     return "";
+}
+
+std::string readImage(const std::string& path, Image& image) {
+    struct stat st {};
+    if (stat(path.c_str(), &st) != 0) return "cannot read \"" + path + "\": " + std::strerror(errno);
+    if (S_ISDIR(st.st_mode)) return "cannot read \"" + path + "\": it is a folder, not an image";
+    if (!S_ISREG(st.st_mode)) return "cannot read \"" + path + "\": not a regular file (a device or pipe?)";
+    std::string error;
+    auto in = openImageFile(path, error);
+    if (!in) return "cannot read \"" + path + "\": " + error;
+    return decodeImage(in.get(), path, image, 0.5 * physicalMemoryBytes());
+}
+
+std::string readImageFromMemory(const std::vector<unsigned char>& bytes, const std::string& name, Image& image,
+                                double budgetBytes) {
+    OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+    std::string error;
+    auto in = openImageMemory(bytes, reader, name, error);
+    if (!in) return "cannot read \"" + name + "\": " + error;
+    return decodeImage(in.get(), name, image, budgetBytes);
 }
 
 } // namespace pt

@@ -62,5 +62,9 @@ std::string writeImage(OutputFile& file, const Image& image);
 // image whose header declares more pixels than half this machine's memory holds, before reading
 // them. Returns "" or the error.
 std::string readImage(const std::string& path, Image& image);
+// The same for an image file held in memory, which `name` stands for, with the bytes its pixels
+// may take (the part fuzzer's entry, with a fuzzer's memory).
+std::string readImageFromMemory(const std::vector<unsigned char>& bytes, const std::string& name, Image& image,
+                                double budgetBytes);
 
 } // namespace pt

@@ -1,0 +1,26 @@
+// A plausibility check of an OpenEXR file's header, before OpenEXR reads it. OpenEXR allocates
+// the table of chunk offsets (8 bytes for each block of scanlines or tile) from the data window
+// the header declares, before it reads any of it: a 200-byte file whose window is 2^31 lines
+// high made pt merge take 2 GB of memory, and more would be a bare "out of memory". The table
+// lies in the file, so a file shorter than its own table is refused here, and so is a header
+// whose sides or chunks are larger than any image pt reads.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace pt {
+
+// `head`: the file's first bytes (at least the whole header, or all of a smaller file), `size`
+// their number, `fileSize` the whole file's. Returns "" or what is wrong.
+std::string checkExrHeader(const unsigned char* head, size_t size, uint64_t fileSize);
+
+// How many first bytes checkExrHeader needs at most: a longer header is refused.
+inline constexpr size_t kMaxExrHeaderBytes = size_t(1) << 20;
+// The largest side, and the largest chunk (a block of scanlines or a tile, uncompressed), that
+// pt reads: OpenEXR allocates a chunk's buffers from the header before reading its data.
+inline constexpr int64_t kMaxExrSide = int64_t(1) << 18;
+inline constexpr int64_t kMaxExrChunkBytes = int64_t(1) << 30;
+
+} // namespace pt
