@@ -416,6 +416,22 @@ check merge_negative_seconds 1 'pt:renderSeconds is -1; expected a number in [0,
 check merge_window_disagrees 1 'its EXR display window is 16x16, not its pt:fullWidth x pt:fullHeight 8x16' merge lie_window.exr -o out/m.exr
 lie lie_attribute.exr attr:pt:camera=str:$(head -c 70000 /dev/zero | tr '\0' c)
 check merge_huge_attribute 1 'lie_attribute.exr: its attribute pt:camera holds 70000 bytes' merge lie_attribute.exr -o out/m.exr
+# EXR headers that declare more than their file can hold: OpenEXR allocates the table of chunk
+# offsets from the header before reading it (16 GB for 2^31 scanlines; a 200-byte file made pt
+# merge take 2 GB), so a table longer than the file, or a side past 262144, is refused first.
+/usr/bin/python3 -c "
+import struct
+def attr(name, kind, data): return name.encode() + b'\0' + kind.encode() + b'\0' + struct.pack('<i', len(data)) + data
+channels = b'R\0' + struct.pack('<iB3xii', 2, 0, 1, 1) + b'\0'
+header = (b'\x76\x2f\x31\x01' + struct.pack('<I', 2) + attr('channels', 'chlist', channels)
+          + attr('compression', 'compression', b'\0') + attr('dataWindow', 'box2i', struct.pack('<4i', 0, 0, 3, 199999))
+          + attr('displayWindow', 'box2i', struct.pack('<4i', 0, 0, 3, 3)) + attr('lineOrder', 'lineOrder', b'\0')
+          + attr('pixelAspectRatio', 'float', struct.pack('<f', 1)) + attr('screenWindowCenter', 'v2f', struct.pack('<2f', 0, 0))
+          + attr('screenWindowWidth', 'float', struct.pack('<f', 1)) + b'\0')
+open('tall.exr', 'wb').write(header + bytes(64))
+open('taller.exr', 'wb').write(header.replace(struct.pack('<4i', 0, 0, 3, 199999), struct.pack('<4i', 0, 0, 3, 2**31 - 2)) + bytes(64))"
+check merge_exr_taller_than_its_file 1 'tall.exr": its OpenEXR header declares a 4x200000 data window in 200000 chunks, whose table of offsets alone needs 1600000 bytes' merge tall.exr -o out/m.exr
+check merge_exr_side_past_262144 1 'taller.exr": its OpenEXR data window is 4x2147483647; pt reads images of at most 262144 pixels a side' merge taller.exr -o out/m.exr
 check merge_quiet_still_errs 1 'nowhere.exr' merge -q part_a.exr nowhere.exr -o out/m.exr
 check resume_count_past_range 1 '--resume: lie_count.exr: pixel (0, 0) holds 8 samples' render m.obj "${split[@]}" --samples 0:4 --resume lie_count.exr -o out/a.exr
 
