@@ -40,7 +40,8 @@ std::string shown(const Json& v) {
 // path to the property inside it ("pbrMetallicRoughness.").
 struct At {
     std::string object, prefix;
-    At inside(const std::string& key) const { return {object, prefix + key + "."}; }
+    size_t index = 0; // of the object in its array
+    At inside(const std::string& key) const { return {object, prefix + key + ".", index}; }
 };
 
 class Schema {
@@ -65,7 +66,6 @@ public:
                                 "meshes", "nodes", "samplers", "scenes", "skins", "textures"})
             array(root_, top, key);
         index(root_, top, "scene", "scenes");
-        lights_ = nullptr;
         if (const Json* ext = extension(root_, top, "KHR_lights_punctual")) {
             lights_ = array(*ext, top.inside("extensions.KHR_lights_punctual"), "lights", true);
             each(*lights_, "KHR_lights_punctual light", [&](const Json& l, const At& at) { checkLight(l, at); });
@@ -73,47 +73,10 @@ public:
         forEach("scenes", "scene", [&](const Json& s, const At& at) { indexList(s, at, "nodes", "nodes"); });
         forEach("nodes", "node", [&](const Json& n, const At& at) { checkNode(n, at); });
         forEach("meshes", "mesh", [&](const Json& m, const At& at) { checkMesh(m, at); });
-        size_t bufferIndex = 0;
-        forEach("buffers", "buffer", [&](const Json& b, const At& at) {
-            integer(b, at, "byteLength", 1, kMaxBytes, true);
-            uint64_t length = b.at("byteLength").get<uint64_t>();
-            // Only a .glb's first buffer may go without a URI: it is the BIN chunk.
-            if (!get(b, "uri") && !(binary_ && bufferIndex == 0)) fail(at, "uri", "is missing");
-            ++bufferIndex;
-            if (!get(b, "uri")) return;
-            if (uint64_t bytes; dataUri(b, at, {"application/octet-stream", "application/gltf-buffer"}, bytes)) {
-                if (bytes != length)
-                    fail(at, "uri", "holds " + std::to_string(bytes) + " bytes of base64 data; byteLength says " + std::to_string(length));
-            } else {
-                facts_.fileBuffers.push_back({bufferIndex - 1, b.at("uri").get<std::string>(), length});
-            }
-        });
-        forEach("bufferViews", "bufferView", [&](const Json& v, const At& at) {
-            index(v, at, "buffer", "buffers", true);
-            integer(v, at, "byteOffset", 0, kMaxBytes);
-            integer(v, at, "byteLength", 1, kMaxBytes, true);
-            integer(v, at, "byteStride", 4, 252);
-            integerOneOf(v, at, "target", {34962, 34963});
-            // Within the buffer's declared length, which tinygltf holds each buffer's data to: an
-            // image's bytes are then never read past the buffer (each term is below 2^53).
-            uint64_t offset = v.value("byteOffset", uint64_t(0)), length = v.at("byteLength").get<uint64_t>();
-            uint64_t buffer = v.at("buffer").get<uint64_t>();
-            uint64_t bufferLength = root_.at("buffers").at(buffer).at("byteLength").get<uint64_t>();
-            if (offset + length > bufferLength)
-                throw LoadError(path_ + ": " + at.object + ": bytes " + std::to_string(offset) + " to " +
-                                std::to_string(offset + length) + " pass the end of buffer " + std::to_string(buffer) +
-                                " (" + std::to_string(bufferLength) + " bytes)");
-        });
+        forEach("buffers", "buffer", [&](const Json& b, const At& at) { checkBuffer(b, at); });
+        forEach("bufferViews", "bufferView", [&](const Json& v, const At& at) { checkBufferView(v, at); });
         forEach("accessors", "accessor", [&](const Json& a, const At& at) { checkAccessor(a, at); });
-        forEach("images", "image", [&](const Json& i, const At& at) {
-            text(i, at, "mimeType");
-            index(i, at, "bufferView", "bufferViews");
-            if (!get(i, "uri") && !get(i, "bufferView")) fail(at, "uri", "is missing, and so is bufferView");
-            if (get(i, "uri") && get(i, "bufferView")) fail(at, "uri", "and bufferView are both given; an image has one");
-            if (get(i, "bufferView") && !get(i, "mimeType")) fail(at, "mimeType", "is missing; an image in a bufferView needs it");
-            uint64_t bytes;
-            if (get(i, "uri")) dataUri(i, at, {"image/png", "image/jpeg", "image/bmp", "image/gif"}, bytes);
-        });
+        forEach("images", "image", [&](const Json& i, const At& at) { checkImage(i, at); });
         forEach("textures", "texture", [&](const Json& t, const At& at) {
             index(t, at, "sampler", "samplers");
             index(t, at, "source", "images");
@@ -307,13 +270,54 @@ private:
             if (!item.is_object()) throw LoadError(path_ + ": " + name + " is " + shown(item) + ", not an object");
             if (const Json* n = get(item, "name"); n && n->is_string() && !n->get_ref<const std::string&>().empty())
                 name += " " + shown(*n);
-            text(item, At{name, ""}, "name");
-            check(item, At{name, ""});
+            text(item, At{name, "", i}, "name");
+            check(item, At{name, "", i});
         }
     }
     void forEach(const std::string& array, const std::string& noun,
                  const std::function<void(const Json&, const At&)>& check) const {
         if (const Json* list = this->array(root_, At{}, array)) each(*list, noun, check);
+    }
+
+    void checkBuffer(const Json& b, const At& at) {
+        integer(b, at, "byteLength", 1, kMaxBytes, true);
+        uint64_t length = b.at("byteLength").get<uint64_t>();
+        // Only a .glb's first buffer may go without a URI: it is the BIN chunk.
+        if (!get(b, "uri")) {
+            if (!(binary_ && at.index == 0)) fail(at, "uri", "is missing");
+        } else if (uint64_t bytes; dataUri(b, at, {"application/octet-stream", "application/gltf-buffer"}, bytes)) {
+            if (bytes != length)
+                fail(at, "uri", "holds " + std::to_string(bytes) + " bytes of base64 data; byteLength says " + std::to_string(length));
+        } else {
+            facts_.fileBuffers.push_back({at.index, b.at("uri").get<std::string>(), length});
+        }
+    }
+
+    void checkBufferView(const Json& v, const At& at) const {
+        index(v, at, "buffer", "buffers", true);
+        integer(v, at, "byteOffset", 0, kMaxBytes);
+        integer(v, at, "byteLength", 1, kMaxBytes, true);
+        integer(v, at, "byteStride", 4, 252);
+        integerOneOf(v, at, "target", {34962, 34963});
+        // Within the buffer's declared length, which tinygltf holds each buffer's data to: an
+        // image's bytes are then never read past the buffer (each term is below 2^53).
+        uint64_t offset = v.value("byteOffset", uint64_t(0)), length = v.at("byteLength").get<uint64_t>();
+        uint64_t buffer = v.at("buffer").get<uint64_t>();
+        uint64_t bufferLength = root_.at("buffers").at(buffer).at("byteLength").get<uint64_t>();
+        if (offset + length > bufferLength)
+            throw LoadError(path_ + ": " + at.object + ": bytes " + std::to_string(offset) + " to " +
+                            std::to_string(offset + length) + " pass the end of buffer " + std::to_string(buffer) + " (" +
+                            std::to_string(bufferLength) + " bytes)");
+    }
+
+    void checkImage(const Json& i, const At& at) const {
+        text(i, at, "mimeType");
+        index(i, at, "bufferView", "bufferViews");
+        if (!get(i, "uri") && !get(i, "bufferView")) fail(at, "uri", "is missing, and so is bufferView");
+        if (get(i, "uri") && get(i, "bufferView")) fail(at, "uri", "and bufferView are both given; an image has one");
+        if (get(i, "bufferView") && !get(i, "mimeType")) fail(at, "mimeType", "is missing; an image in a bufferView needs it");
+        uint64_t bytes;
+        if (get(i, "uri")) dataUri(i, at, {"image/png", "image/jpeg", "image/bmp", "image/gif"}, bytes);
     }
 
     void checkNode(const Json& n, const At& at) const {
