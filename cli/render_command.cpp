@@ -301,10 +301,11 @@ RenderArgs parseArgs(int argc, char** argv) {
     if (r.sunAnglesGiven && r.sunDirGiven)
         throw UsageError("--sun-dir and --sun-elevation/--sun-azimuth both place the sun; give one or the other");
     if (!r.sunDirGiven) r.skyParameters.sunDirection = sunDirectionFromAngles(r.sunElevation, r.sunAzimuth);
-    if (double peak = skyPeakRadiance(r.skyParameters); r.sky && !(peak <= kMaxRadiance))
-        throw UsageError("option --sky-scale: " + shortNumber(r.skyParameters.scale) + " makes the sky's peak radiance (the sun's disk where it is up) " +
-                         shortNumber(peak) + ", beyond the 1e18 whose samples fit in float; at most " +
-                         shortNumber(kMaxRadiance / (peak / r.skyParameters.scale)) + " for this sun and turbidity");
+    if (double peak = r.sky ? skyPeakRadiance(r.skyParameters) : 0.0; !(peak <= kMaxRadiance))
+        throw UsageError("option --sky-scale: " + shortNumber(r.skyParameters.scale) + " makes the sky's peak radiance "
+                         "(the sun's disk where it is up) " + shortNumber(peak) + ", beyond the 1e18 whose samples fit "
+                         "in float; at most " + shortNumber(kMaxRadiance / (peak / r.skyParameters.scale)) +
+                         " for this sun and turbidity");
     bool anyAov = r.aovs.any();
     if ((r.part() || !r.resume.empty()) && formatFromPath(r.output) != ImageFormat::Exr)
         throw UsageError(std::string(r.samplesGiven ? "--samples" : r.cropGiven ? "--crop" : "--resume") +

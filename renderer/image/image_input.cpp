@@ -1,6 +1,7 @@
 #include "image/image_input.h"
 
 #include "image/exr_header.h"
+#include "io/input_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -84,6 +85,15 @@ std::unique_ptr<OIIO::ImageInput> openImageFile(const std::string& path, std::st
     std::error_code ec;
     uint64_t size = std::filesystem::file_size(path, ec);
     return openAs(imageFormatOf(head.data(), head.size(), path), path, nullptr, head.data(), head.size(), ec ? 0 : size, error);
+}
+
+std::string openImageWhole(const std::string& path, uint64_t maxBytes, WholeImageFile& file) {
+    if (imageFormatOfFile(path).empty()) return unknownImageFormat();
+    if (std::string error = readRegularFile(path, maxBytes, file.bytes); !error.empty()) return error;
+    file.reader = std::make_unique<OIIO::Filesystem::IOMemReader>(file.bytes.data(), file.bytes.size());
+    std::string error;
+    file.input = openImageMemory(file.bytes, *file.reader, path, error);
+    return error;
 }
 
 std::unique_ptr<OIIO::ImageInput> openImageMemory(const std::vector<unsigned char>& bytes,

@@ -35,6 +35,19 @@ std::string unknownImageFormat();
 // plugin's message) when it cannot.
 std::unique_ptr<OIIO::ImageInput> openImageFile(const std::string& path, std::string& error);
 
+// An image file read whole and opened from memory: the bytes are exactly what is decoded, so
+// their hash (io/input_file.h) names the content a render used, even if the file is replaced
+// while pt loads.
+struct WholeImageFile {
+    std::vector<unsigned char> bytes;
+    std::unique_ptr<OIIO::Filesystem::IOMemReader> reader; // over `bytes`, for `input`
+    std::unique_ptr<OIIO::ImageInput> input;
+};
+
+// Reads the regular file `path`, of at most `maxBytes`, and opens it; its format is judged from
+// its first bytes before the rest is read (it may be gigabytes of zeros). "" or why not.
+std::string openImageWhole(const std::string& path, uint64_t maxBytes, WholeImageFile& file);
+
 // Opens an image held in memory (`reader` over its bytes, which must outlive the input); `name`
 // stands for it in messages and supplies the extension where the bytes name no format.
 std::unique_ptr<OIIO::ImageInput> openImageMemory(const std::vector<unsigned char>& bytes,

@@ -62,16 +62,10 @@ EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees
     if (!std::filesystem::is_regular_file(path, ec))
         throw LoadError("environment map \"" + path + "\" " +
                         (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found"));
-    // Read whole, then decoded from memory: the hash of these bytes is the map's part of the job's
-    // identity (a map renamed over while pt loads is not hashed anew).
-    if (imageFormatOfFile(path).empty()) // before reading the rest: it may be gigabytes of zeros
-        throw LoadError("cannot read environment map \"" + path + "\": " + unknownImageFormat());
-    std::vector<unsigned char> file;
-    std::string error = readRegularFile(path, uint64_t(textureMemoryBudget()), file);
-    if (!error.empty()) throw LoadError("cannot read environment map \"" + path + "\": " + error);
-    OIIO::Filesystem::IOMemReader reader(file.data(), file.size());
-    auto in = openImageMemory(file, reader, path, error);
-    if (!in) throw LoadError("cannot read environment map \"" + path + "\": " + error);
+    WholeImageFile file;
+    if (std::string error = openImageWhole(path, uint64_t(textureMemoryBudget()), file); !error.empty())
+        throw LoadError("cannot read environment map \"" + path + "\": " + error);
+    OIIO::ImageInput* in = file.input.get();
     const OIIO::ImageSpec spec = in->spec();
     int w = spec.width, h = spec.height, nc = spec.nchannels;
     if (w <= 0 || h <= 0 || nc <= 0)
@@ -86,7 +80,7 @@ EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees
 
     EnvironmentMap map;
     map.path = path;
-    map.sourceHash = contentHash(file.data(), file.size());
+    map.sourceHash = contentHash(file.bytes.data(), file.bytes.size());
     map.width = w;
     map.height = h;
     map.setRotation(rotationDegrees * (kPi / 180.0f));

@@ -307,8 +307,8 @@ void MtlParser::finishBlock() {
             if (!e.sunDirLine) e.sky.sunDirection = sunDirectionFromAngles(e.sunElevation, e.sunAzimuth);
             if (double peak = skyPeakRadiance(e.sky); !(peak <= kMaxRadiance))
                 throw LoadError(path, e.skyScaleLine ? e.skyScaleLine : blockLine,
-                                "skyscale " + shortNumber(e.sky.scale) + ": the sky's peak radiance (the sun's disk where it is up) becomes " + shortNumber(peak) +
-                                    ", beyond the 1e18 whose samples fit in float");
+                                "skyscale " + shortNumber(e.sky.scale) + ": the sky's peak radiance (the sun's disk "
+                                "where it is up) becomes " + shortNumber(peak) + ", beyond the 1e18 whose samples fit in float");
             scene.environment = skyEnvironment(e.sky);
             if (e.sky.sunDirection.y < 0.0f)
                 warnings.add(path + ":" + std::to_string(e.sunDirLine ? e.sunDirLine : e.sunAnglesLine) +

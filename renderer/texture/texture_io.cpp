@@ -92,13 +92,7 @@ bool readTexture(const std::string& path, bool colour, Texture& texture, std::st
         error = "texture \"" + path + "\" " + (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found");
         return false;
     }
-    if (imageFormatOfFile(path).empty()) { // before reading the rest: it may be gigabytes of zeros
-        error = "cannot read texture \"" + path + "\": " + unknownImageFormat();
-        return false;
-    }
-    // Read whole, then decoded from memory: the hash of these bytes is the texture's part of the
-    // job's identity. A file holds no fewer bytes than its texels take, so the budget bounds it.
-    std::vector<unsigned char> bytes;
+    // A file holds no fewer bytes than its texels take, so the budget bounds it.
     uint64_t size = std::filesystem::file_size(path, ec);
     if (!ec && double(size) > budgetBytes) {
         tooLarge = true;
@@ -106,18 +100,13 @@ bool readTexture(const std::string& path, bool colour, Texture& texture, std::st
                 shortNumber(std::max(0.0, budgetBytes) / 1e9) + " GB left for textures (a quarter of this machine's memory)";
         return false;
     }
-    if (std::string readError = readRegularFile(path, ec ? 0 : size, bytes); !readError.empty()) {
-        error = "cannot read texture \"" + path + "\": " + readError;
+    WholeImageFile file;
+    if (std::string openError = openImageWhole(path, ec ? 0 : size, file); !openError.empty()) {
+        error = "cannot read texture \"" + path + "\": " + openError;
         return false;
     }
-    OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
-    auto in = openImageMemory(bytes, reader, path, error);
-    if (!in) {
-        error = "cannot read texture \"" + path + "\": " + error;
-        return false;
-    }
-    texture.sourceHash = contentHash(bytes.data(), bytes.size());
-    return decodeTexture(*in, path, colour, texture, error, budgetBytes, tooLarge);
+    texture.sourceHash = contentHash(file.bytes.data(), file.bytes.size());
+    return decodeTexture(*file.input, path, colour, texture, error, budgetBytes, tooLarge);
 }
 
 bool readTextureFromMemory(const std::vector<unsigned char>& bytes, const std::string& name, const std::string& format,
