@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -87,8 +88,17 @@ std::unique_ptr<OIIO::ImageInput> openImageFile(const std::string& path, std::st
     return openAs(imageFormatOf(head.data(), head.size(), path), path, nullptr, head.data(), head.size(), ec ? 0 : size, error);
 }
 
-std::string openImageWhole(const std::string& path, uint64_t maxBytes, WholeImageFile& file) {
+std::string openImageWhole(const std::string& path, uint64_t maxBytes, WholeImageFile& file, bool& tooLarge) {
+    tooLarge = false;
     if (imageFormatOfFile(path).empty()) return unknownImageFormat();
+    std::error_code ec;
+    if (uint64_t size = std::filesystem::file_size(path, ec); !ec && size > maxBytes) {
+        tooLarge = true;
+        char text[120];
+        std::snprintf(text, sizeof text, "its file of %.3g GB is larger than the %.3g GB it may take", double(size) / 1e9,
+                      double(maxBytes) / 1e9);
+        return text;
+    }
     if (std::string error = readRegularFile(path, maxBytes, file.bytes); !error.empty()) return error;
     file.reader = std::make_unique<OIIO::Filesystem::IOMemReader>(file.bytes.data(), file.bytes.size());
     std::string error;

@@ -45,8 +45,9 @@ struct WholeImageFile {
 };
 
 // Reads the regular file `path`, of at most `maxBytes`, and opens it; its format is judged from
-// its first bytes before the rest is read (it may be gigabytes of zeros). "" or why not.
-std::string openImageWhole(const std::string& path, uint64_t maxBytes, WholeImageFile& file);
+// its first bytes before its size or the rest (it may be gigabytes of zeros). "" or why not;
+// `tooLarge` says when the size was the reason.
+std::string openImageWhole(const std::string& path, uint64_t maxBytes, WholeImageFile& file, bool& tooLarge);
 
 // Opens an image held in memory (`reader` over its bytes, which must outlive the input); `name`
 // stands for it in messages and supplies the extension where the bytes name no format.

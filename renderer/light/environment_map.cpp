@@ -63,7 +63,8 @@ EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees
         throw LoadError("environment map \"" + path + "\" " +
                         (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found"));
     WholeImageFile file;
-    if (std::string error = openImageWhole(path, uint64_t(textureMemoryBudget()), file); !error.empty())
+    bool tooLarge;
+    if (std::string error = openImageWhole(path, uint64_t(textureMemoryBudget()), file, tooLarge); !error.empty())
         throw LoadError("cannot read environment map \"" + path + "\": " + error);
     OIIO::ImageInput* in = file.input.get();
     const OIIO::ImageSpec spec = in->spec();

@@ -93,16 +93,11 @@ bool readTexture(const std::string& path, bool colour, Texture& texture, std::st
         return false;
     }
     // A file holds no fewer bytes than its texels take, so the budget bounds it.
-    uint64_t size = std::filesystem::file_size(path, ec);
-    if (!ec && double(size) > budgetBytes) {
-        tooLarge = true;
-        error = "texture \"" + path + "\" is too large: its file of " + shortNumber(double(size) / 1e9) + " GB is beyond the " +
-                shortNumber(std::max(0.0, budgetBytes) / 1e9) + " GB left for textures (a quarter of this machine's memory)";
-        return false;
-    }
     WholeImageFile file;
-    if (std::string openError = openImageWhole(path, ec ? 0 : size, file); !openError.empty()) {
-        error = "cannot read texture \"" + path + "\": " + openError;
+    if (std::string openError = openImageWhole(path, uint64_t(std::max(0.0, budgetBytes)), file, tooLarge); !openError.empty()) {
+        error = tooLarge ? "texture \"" + path + "\" is too large: " + openError + " (textures may take a quarter of this "
+                           "machine's memory, all together)"
+                         : "cannot read texture \"" + path + "\": " + openError;
         return false;
     }
     texture.sourceHash = contentHash(file.bytes.data(), file.bytes.size());
