@@ -21,7 +21,7 @@ Image filmImage(const Film& film, const AovSelection& aovs, double exposure, siz
             v = float(x);
         }
     };
-    if (exposure != 0.0) scale(image.rgb, std::exp2(exposure));
+    scale(image.rgb, std::exp2(exposure)); // at 0 EV too: a merged part's mean may pass float
     if (aovs.variance) {
         image.layers.push_back({"variance", {"R", "G", "B"}, film.varianceOfMean()});
         scale(image.layers.back().pixels, std::exp2(2.0 * exposure)); // a mean's variance scales by the square

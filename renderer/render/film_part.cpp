@@ -160,18 +160,20 @@ std::string partFromImage(const Image& image, const std::string& name, Film& fil
     auto value = [](const ImageLayer* hi, const ImageLayer* lo, size_t i) { return double(hi->pixels[i]) + double(lo->pixels[i]); };
     const double range = double(last - first);
     for (size_t p = 0; p < n; ++p) {
-        std::string pixel = "pixel (" + std::to_string(info.x0 + int(p % size_t(image.width))) + ", " +
-                            std::to_string(info.y0 + int(p / size_t(image.width))) + ")";
+        auto pixel = [&] { // for a message: only made when one is needed
+            return "pixel (" + std::to_string(info.x0 + int(p % size_t(image.width))) + ", " +
+                   std::to_string(info.y0 + int(p / size_t(image.width))) + ")";
+        };
         double c = count->pixels[p];
         if (!(c >= 0.0 && c <= range && c == std::floor(c)))
-            return fail(pixel + " holds " + shortNumber(c) + " samples; its range " + std::to_string(first) + ":" +
+            return fail(pixel() + " holds " + shortNumber(c) + " samples; its range " + std::to_string(first) + ":" +
                         std::to_string(last) + " has " + shortNumber(range));
         glm::dvec3 s, q;
         for (int k = 0; k < 3; ++k) s[k] = value(sum, sumLo, 3 * p + k), q[k] = value(sq, sqLo, 3 * p + k);
         for (int k = 0; k < 3; ++k)
             if (!(std::isfinite(s[k]) && std::isfinite(q[k]) && s[k] >= 0.0 && q[k] >= 0.0 &&
                   (c > 0.0 || (s[k] == 0.0 && q[k] == 0.0)) && s[k] * s[k] <= c * q[k] * (1.0 + 1e-6) + 1e-300))
-                return fail(pixel + ": its sums (" + shortNumber(s[k]) + ", of squares " + shortNumber(q[k]) +
+                return fail(pixel() + ": its sums (" + shortNumber(s[k]) + ", of squares " + shortNumber(q[k]) +
                             ") cannot be those of " + shortNumber(c) + " samples of radiance");
         film.add(p, s, q, uint32_t(c));
         if (!layers) continue;
@@ -180,7 +182,9 @@ std::string partFromImage(const Image& image, const std::string& name, Film& fil
         double h = hits->pixels[p], d = value(depth, depthLo, p);
         bool sound = h >= 0.0 && h <= c && h == std::floor(h) && d >= 0.0 && std::isfinite(d) && isFinite(Vec3(a)) &&
                      a.x >= 0.0 && a.y >= 0.0 && a.z >= 0.0 && glm::length(nm) <= h * (1.0 + 1e-6);
-        if (!sound) return fail(pixel + ": its first-hit sums (albedo, normal, depth, hits) cannot be those of " + shortNumber(c) + " samples");
+        if (!sound)
+            return fail(pixel() + ": its first-hit sums (albedo, normal, depth, hits) cannot be those of " + shortNumber(c) +
+                        " samples");
         film.addFirstHit(p, a, nm, d, uint32_t(h));
     }
     return "";
