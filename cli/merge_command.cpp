@@ -148,11 +148,12 @@ int mergeCommand(int argc, char** argv) {
         if (merged.empty()) {
             job.metadata = image.metadata;
             film.emplace(in.fullWidth, in.fullHeight); // within the memory budget: partFromImage checked
-            film->enableFirstHitLayers();              // kept only if every part has them
+            if (part.hasFirstHitLayers()) film->enableFirstHitLayers(); // used only if every part has them
         }
         for (int y = in.y0; y < in.y1; ++y)
             for (int x = in.x0; x < in.x1; ++x)
-                film->addPixel(size_t(y) * size_t(in.fullWidth) + size_t(x), part, size_t(y - in.y0) * size_t(image.width) + size_t(x - in.x0));
+                film->addPixel(size_t(y) * size_t(in.fullWidth) + size_t(x), part,
+                               size_t(y - in.y0) * size_t(image.width) + size_t(x - in.x0));
         seconds += in.seconds;
         merged.push_back({path, in, part.hasFirstHitLayers()});
     }
