@@ -46,13 +46,18 @@ if grep -q "hold fewer than the job's 12 samples (the fewest 7); no whole-image 
 
 # Interrupted and resumed: the partial of a render stopped by SIGTERM, finished by --resume,
 # equals the render that was never stopped. 512 spp takes a few seconds on 2 cores.
+# A signal before rendering begins (pt still starting or loading, on a busy machine) stops it
+# with nothing written: then it is sent later.
 long=(-spp 512 --res 64x48 --aov variance -q)
-"$pt" render "$root/scenes/cornell_box.obj" "${long[@]}" -o whole.exr >/dev/null 2>&1 &
-pid=$!
-sleep 1
-kill -TERM "$pid" 2>/dev/null
-wait "$pid"
-status=$?
+for delay in 1 2 4; do
+  "$pt" render "$root/scenes/cornell_box.obj" "${long[@]}" -o whole.exr >/dev/null 2>&1 &
+  pid=$!
+  sleep $delay
+  kill -TERM "$pid" 2>/dev/null
+  wait "$pid"
+  status=$?
+  [[ $status -eq 143 && ! -f whole.partial.exr ]] || break
+done
 if [[ $status -eq 143 && -f whole.partial.exr && ! -f whole.exr ]]; then
   run "$pt" render "$root/scenes/cornell_box.obj" "${long[@]}" --resume whole.partial.exr -o whole.exr
   run "$pt" render "$root/scenes/cornell_box.obj" "${long[@]}" -o never_stopped.exr
