@@ -191,6 +191,7 @@ g tangents.gltf normal_scale_huge 'mat["normalTexture"]["scale"] = 1e308'
 g plane_spot.gltf spot_equal 'light["spot"] = {"innerConeAngle": 0.5, "outerConeAngle": 0.5 + 1e-12}'
 g bin_and_image.gltf uri_nul 'd["images"][0]["uri"] = "checker.png%00.jpg"'
 g bin_and_image.gltf uri_absolute 'd["buffers"][0]["uri"] = os.getcwd() + "/bin_and_image.bin"'
+g textured.gltf ktt_scale_1e30 'mat["pbrMetallicRoughness"]["baseColorTexture"]["extensions"] = {"KHR_texture_transform": {"scale": [1e30, 1e30]}}'
 g plane_point.gltf nodes_string 'd["nodes"] = "x"'
 g plane_point.gltf scene_without_scenes 'del d["scenes"]; d["scene"] = 5'
 g plane_point.gltf image_data_corrupt 'd["images"] = [{"uri": "data:image/png;base64,iVBORw0KGgoAAAAA"}]; d["textures"] = [{"source": 0}]; mat["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0}'
@@ -230,6 +231,7 @@ check gltf_normal_scale_huge 1 'normal_scale_huge.gltf: material 0 "Mapped": nor
 check gltf_spot_equal 1 'spot_equal.gltf: light 0: spot cone angles 0.5 and 0.5 have the same cosine in float; make the outer cone wider' render spot_equal.gltf -o out/a.exr
 check gltf_uri_nul 1 'uri_nul.gltf: image 0: uri "checker.png%00.jpg" holds an encoded NUL (%00)' render uri_nul.gltf -o out/a.exr
 check gltf_uri_absolute 1 "uri_absolute.gltf: buffer 0: uri \"$PWD/bin_and_image.bin\" is not a relative path" render uri_absolute.gltf -o out/a.exr
+check gltf_ktt_scale_1e30 1 'ktt_scale_1e30.gltf: material "Tile": its diffuse or base colour texture'"'"'s coordinate transform has 1e+30, beyond +-1e4' render ktt_scale_1e30.gltf -o out/a.exr
 check gltf_nodes_string 1 'nodes_string.gltf: nodes must be an array, found "x"' render nodes_string.gltf -o out/a.exr
 check gltf_scene_without_scenes 1 'scene_without_scenes.gltf: scene 5 does not exist (the file has 0)' render scene_without_scenes.gltf -o out/a.exr
 check gltf_image_data_corrupt 1 'image_data_corrupt.gltf: material 0 "White" baseColorTexture: image 0: cannot decode image_data_corrupt.gltf image 0' render image_data_corrupt.gltf -o out/a.exr

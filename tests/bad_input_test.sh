@@ -327,6 +327,7 @@ check mtl_skyscale_3e38 1 "skyscale.mtl:3: skyscale 3e+38: the sky's peak radian
 oiiotool --pattern constant:color=inf,1,1 4x4 3 -d float -o inf_tex.exr
 oiiotool --pattern constant:color=1e5,1,1 4x4 3 -d float -o bright_tex.exr
 maps_case inf_texel 0 'map_Kd: texture "inf_tex.exr": texel (0, 0) channel 0 is inf; a colour must be finite and not negative' 'map_Kd inf_tex.exr'
+maps_case texture_scale_1e5 1 'material "M": its diffuse or base colour texture'"'"'s coordinate transform has 100000, beyond +-1e4' 'map_Kd -s 1e5 1e5 rgb.png'
 maps_case bright_texel 1 'its diffuse or base colour texture "bright_tex.exr" reaches 100000, which times its factor 0.5 passes the reflectance limit 10' 'map_Kd bright_tex.exr'
 truncate -s 8G sparse_tex.png
 start=$(date +%s%N)

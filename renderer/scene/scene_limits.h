@@ -40,6 +40,10 @@ inline constexpr float kMinFieldOfView = 0.01f;
 inline constexpr float kMinOrthoFraction = 1e-4f;
 // Widest aspect ratio a glTF camera may ask for: an image side is at most 65536 pixels.
 inline constexpr float kMaxAspect = 65536.0f;
+// Largest |scale| and |offset| of a texture's coordinate transform (MTL -s and -o, glTF
+// KHR_texture_transform): beyond, float texture coordinates no longer tell a texel from its
+// neighbours, and a scale of 1e30 draws the texture as noise.
+inline constexpr float kMaxTextureTransform = 1e4f;
 // Largest |scale| of a normal map (glTF normalTexture.scale): the perturbed normal (s x, s y, z)
 // is squared when normalized, which overflows float beyond about 1e19.
 inline constexpr double kMaxNormalScale = 1e6;

@@ -91,6 +91,17 @@ static void checkMaps(const Scene& scene, const Material& m) {
     check(m.emissionMap, maxComponent(m.emission), kMaxRadiance, "emission", "the radiance limit 1e18");
     check(m.normalMap, std::abs(m.normalMap.bumpScale), kMaxNormalScale, "normal", "1e6, where normals overflow float");
     check(m.bumpMap, std::abs(m.bumpMap.bumpScale), kMaxNormalScale, "bump", "1e6, where normals overflow float");
+    const std::pair<const TextureMap*, const char*> maps[] = {
+        {&m.kdMap, "diffuse or base colour"}, {&m.ksMap, "specular colour"}, {&m.roughnessMap, "roughness"},
+        {&m.metallicMap, "metallic"}, {&m.normalMap, "normal"}, {&m.bumpMap, "bump"}, {&m.alphaMap, "coverage"},
+        {&m.emissionMap, "emission"}};
+    for (const auto& [map, what] : maps) {
+        float peak = std::max({std::abs(map->scale.x), std::abs(map->scale.y), std::abs(map->offset.x), std::abs(map->offset.y)});
+        if (map->used() && !(peak <= kMaxTextureTransform))
+            throw LoadError(scene.path + ": material \"" + m.name + "\": its " + what + " texture's coordinate transform has " +
+                            shortNumber(peak) + ", beyond +-1e4, where float texture coordinates no longer address single "
+                            "texels (MTL -s and -o, glTF KHR_texture_transform)");
+    }
 }
 
 // The limits of scene/scene_limits.h that depend on the size of the whole scene.
