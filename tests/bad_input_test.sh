@@ -327,6 +327,10 @@ check mtl_skyscale_3e38 1 "skyscale.mtl:3: skyscale 3e+38: the sky's peak radian
 oiiotool --pattern constant:color=inf,1,1 4x4 3 -d float -o inf_tex.exr
 oiiotool --pattern constant:color=1e5,1,1 4x4 3 -d float -o bright_tex.exr
 maps_case inf_texel 0 'map_Kd: texture "inf_tex.exr": texel (0, 0) channel 0 is inf; a colour must be finite and not negative' 'map_Kd inf_tex.exr'
+# An EXR whose chunk table points before the file (found by the part fuzzer): OpenImageIO's memory
+# reader read the byte before its buffer; ASan's run of this suite sees such a read.
+cp "$gltf/../../tests/fuzz/corpus/part/regress_chunk_offset_before_file.exr" offset_before.exr
+maps_case exr_offset_before_file 0 'map_Kd: cannot read texture "offset_before.exr": Failed OpenEXR read' 'map_Kd offset_before.exr'
 maps_case texture_scale_1e5 1 'material "M": its diffuse or base colour texture'"'"'s coordinate transform has 100000, beyond +-1e4' 'map_Kd -s 1e5 1e5 rgb.png'
 maps_case bright_texel 1 'its diffuse or base colour texture "bright_tex.exr" reaches 100000, which times its factor 0.5 passes the reflectance limit 10' 'map_Kd bright_tex.exr'
 truncate -s 8G sparse_tex.png

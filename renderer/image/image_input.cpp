@@ -51,6 +51,25 @@ std::unique_ptr<OIIO::ImageInput> openAs(const std::string& format, const std::s
 
 } // namespace
 
+bool MemoryImageReader::seek(int64_t offset) {
+    if (offset < 0 || uint64_t(offset) > size()) return false;
+    m_pos = offset;
+    return true;
+}
+
+size_t MemoryImageReader::read(void* buf, size_t size) {
+    size_t n = pread(buf, size, m_pos);
+    m_pos += int64_t(n);
+    return n;
+}
+
+size_t MemoryImageReader::pread(void* buf, size_t size, int64_t offset) {
+    if (offset < 0 || uint64_t(offset) >= this->size()) return 0;
+    size_t n = std::min(size, this->size() - size_t(offset));
+    std::memcpy(buf, m_buf.data() + offset, n);
+    return n;
+}
+
 std::string imageFormatOf(const unsigned char* head, size_t size, const std::string& name) {
     if (startsWith(head, size, "\x89PNG", 4)) return "png";
     if (startsWith(head, size, "\xFF\xD8\xFF", 3)) return "jpeg";
@@ -100,14 +119,14 @@ std::string openImageWhole(const std::string& path, uint64_t maxBytes, WholeImag
         return text;
     }
     if (std::string error = readRegularFile(path, maxBytes, file.bytes); !error.empty()) return error;
-    file.reader = std::make_unique<OIIO::Filesystem::IOMemReader>(file.bytes.data(), file.bytes.size());
+    file.reader = std::make_unique<MemoryImageReader>(file.bytes);
     std::string error;
     file.input = openImageMemory(file.bytes, *file.reader, path, error);
     return error;
 }
 
 std::unique_ptr<OIIO::ImageInput> openImageMemory(const std::vector<unsigned char>& bytes,
-                                                  OIIO::Filesystem::IOMemReader& reader, const std::string& name,
+                                                  MemoryImageReader& reader, const std::string& name,
                                                   std::string& error) {
     return openAs(imageFormatOf(bytes.data(), bytes.size(), name), name, &reader, bytes.data(), bytes.size(), bytes.size(), error);
 }

@@ -20,6 +20,17 @@ namespace pt {
 // channels). pt asks for 16, which it rounds up to 64.
 inline constexpr int kImageReadChunk = 64;
 
+// OpenImageIO's reader of an image in memory, with its offsets checked: its own takes any seek,
+// and OpenEXR seeks to the offsets a file's chunk table gives, so a table holding -1 read the
+// byte before the buffer (the part fuzzer found it).
+class MemoryImageReader final : public OIIO::Filesystem::IOMemReader {
+public:
+    MemoryImageReader(const std::vector<unsigned char>& bytes) : IOMemReader(bytes.data(), bytes.size()) {}
+    bool seek(int64_t offset) override;
+    size_t read(void* buf, size_t size) override;
+    size_t pread(void* buf, size_t size, int64_t offset) override;
+};
+
 // The OpenImageIO format name ("png", "openexr", ...) for a file starting with `head` and named
 // `name`; "" when pt does not read it.
 std::string imageFormatOf(const unsigned char* head, size_t size, const std::string& name);
@@ -40,7 +51,7 @@ std::unique_ptr<OIIO::ImageInput> openImageFile(const std::string& path, std::st
 // while pt loads.
 struct WholeImageFile {
     std::vector<unsigned char> bytes;
-    std::unique_ptr<OIIO::Filesystem::IOMemReader> reader; // over `bytes`, for `input`
+    std::unique_ptr<MemoryImageReader> reader; // over `bytes`, for `input`
     std::unique_ptr<OIIO::ImageInput> input;
 };
 
@@ -52,7 +63,7 @@ std::string openImageWhole(const std::string& path, uint64_t maxBytes, WholeImag
 // Opens an image held in memory (`reader` over its bytes, which must outlive the input); `name`
 // stands for it in messages and supplies the extension where the bytes name no format.
 std::unique_ptr<OIIO::ImageInput> openImageMemory(const std::vector<unsigned char>& bytes,
-                                                  OIIO::Filesystem::IOMemReader& reader, const std::string& name,
+                                                  MemoryImageReader& reader, const std::string& name,
                                                   std::string& error);
 
 } // namespace pt

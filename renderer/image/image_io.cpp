@@ -229,7 +229,7 @@ std::string readImage(const std::string& path, Image& image) {
 
 std::string readImageFromMemory(const std::vector<unsigned char>& bytes, const std::string& name, Image& image,
                                 double budgetBytes) {
-    OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+    MemoryImageReader reader(bytes);
     std::string error;
     auto in = openImageMemory(bytes, reader, name, error);
     if (!in) return "cannot read \"" + name + "\": " + error;

@@ -107,7 +107,7 @@ bool readTexture(const std::string& path, bool colour, Texture& texture, std::st
 bool readTextureFromMemory(const std::vector<unsigned char>& bytes, const std::string& name, const std::string& format,
                            bool colour, Texture& texture, std::string& error, double budgetBytes, bool& tooLarge) {
     tooLarge = false;
-    OIIO::Filesystem::IOMemReader reader(const_cast<unsigned char*>(bytes.data()), bytes.size());
+    MemoryImageReader reader(bytes);
     auto in = openImageMemory(bytes, reader, "image" + format, error);
     if (!in) {
         error = "cannot decode " + name + ": " + error;
