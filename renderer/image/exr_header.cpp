@@ -23,18 +23,62 @@ int64_t linesPerChunk(int compression) {
     }
 }
 
-} // namespace
+// The size of a value of each attribute type OpenEXR 3.1 reads whatever size the file declares;
+// 0 for the types it reads by the declared size or by their contents.
+int64_t fixedValueSize(const std::string& type) {
+    static const std::pair<const char*, int64_t> kSizes[] = {
+        {"box2i", 16}, {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"deepImageState", 1},
+        {"envmap", 1}, {"lineOrder", 1}, {"double", 8}, {"float", 4}, {"int", 4}, {"keycode", 28},
+        {"rational", 8}, {"timecode", 8}, {"tiledesc", 9}, {"m33f", 36}, {"m33d", 72}, {"m44f", 64},
+        {"m44d", 128}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16}, {"v3i", 12}, {"v3f", 12}, {"v3d", 24}};
+    for (const auto& [name, bytes] : kSizes)
+        if (type == name) return bytes;
+    return 0;
+}
 
-std::string checkExrHeader(const unsigned char* head, size_t size, uint64_t fileSize) {
-    if (size < 8) return "its OpenEXR header is cut short";
-    const bool tiled = head[5] & 0x02, longNames = head[5] & 0x04;
-    const size_t maxName = longNames ? 256 : 32;
+// Whether OpenEXR reads exactly `length` bytes for a value of `type` at `v`, and allocates no
+// more: it reads fixed-size types, channel lists and previews by their contents, string vectors
+// by lengths inside them, and ID manifests as `length` - 4 bytes. A value that disagrees would
+// make OpenEXR read the rest of the header from another place than this check, or allocate from
+// a number the file never backs (a string of 2 GB in a 60-byte vector).
+bool valueReadAsDeclared(const std::string& type, const unsigned char* v, int64_t length) {
+    if (int64_t fixed = fixedValueSize(type)) return length == fixed;
+    if (type == "chlist") { // name, NUL, type, pLinear, 3 reserved, two samplings; then NUL
+        int64_t c = 0;
+        while (c < length && v[c] != 0) {
+            const void* end = std::memchr(v + c, 0, size_t(length - c));
+            if (!end) return false;
+            c = static_cast<const unsigned char*>(end) - v + 1 + 16;
+        }
+        return c + 1 == length;
+    }
+    if (type == "preview") // width, height, then 4 bytes a pixel
+        return length >= 8 && uint64_t(uint32_t(int32At(v))) * uint32_t(int32At(v + 4)) * 4 == uint64_t(length - 8);
+    if (type == "stringvector") { // each string: its length, then its bytes
+        for (int64_t c = 0; c < length;) {
+            if (length - c < 4) return false;
+            int32_t n = int32At(v + c);
+            if (n < 0 || n > length - c - 4) return false;
+            c += 4 + n;
+        }
+        return true;
+    }
+    if (type == "idmanifest") return length >= 8;
+    return true; // string, floatvector and types OpenEXR does not know: `length` bytes
+}
+
+// One header's facts, as far as the chunk table and a chunk's size go.
+struct PartHeader {
     bool haveWindow = false, haveTiles = false, haveChunkCount = false;
     int64_t bytesPerPixel = 0; // of every channel in chlist, uncompressed
     int64_t x0 = 0, y0 = 0, x1 = -1, y1 = -1, tileX = 1, tileY = 1, chunkCount = 0;
     int compression = 0;
-    size_t at = 8;
+};
+
+// Walks one header from `at` to its closing NUL (consumed), as OpenEXR reads it.
+std::string readHeader(const unsigned char* head, size_t size, size_t maxName, size_t& at, PartHeader& h) {
     auto text = [&](std::string& out) { // a NUL-terminated name, shorter than maxName
+        if (at >= size) return false;
         const void* end = std::memchr(head + at, 0, std::min(size - at, maxName));
         if (!end) return false;
         out.assign(reinterpret_cast<const char*>(head + at), static_cast<const unsigned char*>(end) - (head + at));
@@ -43,52 +87,80 @@ std::string checkExrHeader(const unsigned char* head, size_t size, uint64_t file
     };
     for (;;) {
         if (at >= size) return "its OpenEXR header does not end within its first " + std::to_string(size) + " bytes";
-        if (head[at] == 0) break; // the end of the (first) header
+        if (head[at] == 0) break;
         std::string name, type;
         if (!text(name) || !text(type) || size - at < 4) return "its OpenEXR header holds a malformed attribute";
         int32_t length = int32At(head + at);
         at += 4;
         if (length < 0 || uint64_t(length) > size - at) return "its OpenEXR attribute \"" + name + "\" runs past its header";
         const unsigned char* v = head + at;
-        if (name == "dataWindow" && type == "box2i" && length == 16)
-            x0 = int32At(v), y0 = int32At(v + 4), x1 = int32At(v + 8), y1 = int32At(v + 12), haveWindow = true;
-        else if (name == "compression" && length == 1)
-            compression = v[0];
-        else if (name == "tiles" && type == "tiledesc" && length == 9)
-            tileX = uint32_t(int32At(v)), tileY = uint32_t(int32At(v + 4)), haveTiles = true;
-        else if (name == "chunkCount" && length == 4)
-            chunkCount = int32At(v), haveChunkCount = true;
+        if (!valueReadAsDeclared(type, v, length))
+            return "its OpenEXR attribute \"" + name + "\" of type " + type + " declares " + std::to_string(length) +
+                   " bytes, which its value does not fill";
+        if (name == "dataWindow" && type == "box2i")
+            h.x0 = int32At(v), h.y0 = int32At(v + 4), h.x1 = int32At(v + 8), h.y1 = int32At(v + 12), h.haveWindow = true;
+        else if (name == "compression" && type == "compression")
+            h.compression = v[0];
+        else if (name == "tiles" && type == "tiledesc")
+            h.tileX = uint32_t(int32At(v)), h.tileY = uint32_t(int32At(v + 4)), h.haveTiles = true;
+        else if (name == "chunkCount" && type == "int")
+            h.chunkCount = int32At(v), h.haveChunkCount = true;
         else if (name == "channels" && type == "chlist")
-            for (size_t c = 0; c < size_t(length) && v[c] != 0;) { // name, then type, pLinear, 3 reserved, two samplings
-                const void* end = std::memchr(v + c, 0, size_t(length) - c);
-                if (!end || size_t(static_cast<const unsigned char*>(end) - v) + 17 > size_t(length))
-                    return "its OpenEXR channel list is malformed";
-                c = size_t(static_cast<const unsigned char*>(end) - v) + 1;
-                bytesPerPixel += int32At(v + c) == 1 ? 2 : 4; // half, or uint and float
+            for (size_t c = 0; v[c] != 0;) {
+                c = size_t(static_cast<const unsigned char*>(std::memchr(v + c, 0, size_t(length) - c)) - v) + 1;
+                h.bytesPerPixel += int32At(v + c) == 1 ? 2 : 4; // half, or uint and float
                 c += 16;
             }
         at += size_t(length);
     }
-    if (!haveWindow) return "its OpenEXR header has no dataWindow";
-    int64_t width = x1 - x0 + 1, height = y1 - y0 + 1;
+    ++at;
+    return "";
+}
+
+// The number of chunks of one part, or an error if the part could not be read within pt's limits.
+std::string chunksOf(const PartHeader& h, bool tiled, int64_t& chunks) {
+    if (!h.haveWindow) return "its OpenEXR header has no dataWindow";
+    int64_t width = h.x1 - h.x0 + 1, height = h.y1 - h.y0 + 1;
     if (width <= 0 || height <= 0) return "its OpenEXR data window is empty";
-    int64_t chunks;
-    if (haveChunkCount) chunks = chunkCount;
-    else if (tiled && haveTiles && tileX > 0 && tileY > 0) chunks = ((width + tileX - 1) / tileX) * ((height + tileY - 1) / tileY);
-    else chunks = (height + linesPerChunk(compression) - 1) / linesPerChunk(compression);
+    if (h.haveChunkCount) chunks = h.chunkCount;
+    else if (tiled && h.haveTiles && h.tileX > 0 && h.tileY > 0)
+        chunks = ((width + h.tileX - 1) / h.tileX) * ((height + h.tileY - 1) / h.tileY);
+    else chunks = (height + linesPerChunk(h.compression) - 1) / linesPerChunk(h.compression);
     if (width > kMaxExrSide || height > kMaxExrSide)
         return "its OpenEXR data window is " + std::to_string(width) + "x" + std::to_string(height) +
                "; pt reads images of at most 262144 pixels a side";
     // What OpenEXR allocates for one chunk, uncompressed, before it reads a byte of it.
-    int64_t chunkPixels = tiled && haveTiles ? std::min(tileX, width) * std::min(tileY, height)
-                                             : width * std::min(linesPerChunk(compression), height);
-    if (chunkPixels * bytesPerPixel > kMaxExrChunkBytes)
-        return "its OpenEXR chunks hold " + std::to_string(chunkPixels * bytesPerPixel) + " bytes each, uncompressed; pt "
+    int64_t chunkPixels = tiled && h.haveTiles ? std::min(h.tileX, width) * std::min(h.tileY, height)
+                                               : width * std::min(linesPerChunk(h.compression), height);
+    if (chunkPixels * h.bytesPerPixel > kMaxExrChunkBytes)
+        return "its OpenEXR chunks hold " + std::to_string(chunkPixels * h.bytesPerPixel) + " bytes each, uncompressed; pt "
                "reads chunks of at most 1 GB";
-    if (chunks < 0 || uint64_t(chunks) * 8 > fileSize)
-        return "its OpenEXR header declares a " + std::to_string(width) + "x" + std::to_string(height) + " data window in " +
-               std::to_string(chunks) + " chunks, whose table of offsets alone needs " + std::to_string(chunks * 8) +
-               " bytes; the file has " + std::to_string(fileSize) + " (truncated or corrupt)";
+    if (chunks < 0) return "its OpenEXR header declares " + std::to_string(chunks) + " chunks";
+    return "";
+}
+
+} // namespace
+
+std::string checkExrHeader(const unsigned char* head, size_t size, uint64_t fileSize) {
+    if (size < 8) return "its OpenEXR header is cut short";
+    const bool tiled = head[5] & 0x02, longNames = head[5] & 0x04, multipart = head[5] & 0x10;
+    const size_t maxName = longNames ? 256 : 32;
+    size_t at = 8;
+    int64_t chunks = 0; // of every part: their tables of offsets lie one after another
+    for (int part = 0;; ++part) {
+        PartHeader h;
+        if (std::string error = readHeader(head, size, maxName, at, h); !error.empty()) return error;
+        int64_t partChunks = 0;
+        if (std::string error = chunksOf(h, tiled, partChunks); !error.empty()) return error;
+        chunks += partChunks;
+        if (uint64_t(chunks) * 8 > fileSize)
+            return "its OpenEXR header declares a " + std::to_string(h.x1 - h.x0 + 1) + "x" + std::to_string(h.y1 - h.y0 + 1) +
+                   " data window in " + std::to_string(chunks) + " chunks, whose table of offsets alone needs " +
+                   std::to_string(chunks * 8) + " bytes; the file has " + std::to_string(fileSize) + " (truncated or corrupt)";
+        // A multipart file ends its list of headers with an empty one.
+        if (!multipart || (at < size && head[at] == 0)) break;
+        if (part >= 1024) return "its OpenEXR file declares more than 1024 parts";
+    }
     return "";
 }
 

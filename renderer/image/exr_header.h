@@ -3,7 +3,10 @@
 // the header declares, before it reads any of it: a 200-byte file whose window is 2^31 lines
 // high made pt merge take 2 GB of memory, and more would be a bare "out of memory". The table
 // lies in the file, so a file shorter than its own table is refused here, and so is a header
-// whose sides or chunks are larger than any image pt reads.
+// whose sides or chunks are larger than any image pt reads. Every attribute of every header (of
+// each part, for a multipart file) must fill exactly the size it declares: OpenEXR reads many
+// types by their contents, so a value that disagrees sends it elsewhere in the header, where a
+// size of 1.4 GB was allocated from a 2 KB file (found by the part fuzzer).
 #pragma once
 
 #include <cstddef>
