@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <unistd.h>
 
 namespace pt::test {
 namespace {
@@ -129,6 +131,29 @@ TEST(Gltf, TexturesAreTheRightWayUp) {
     float bottomLeft = regionStats(r, 9, 18, 14, 23).mean.y;
     EXPECT_LT(topLeft * 5.0f, topRight);
     EXPECT_LT(topLeft * 5.0f, bottomLeft);
+}
+
+// A sampler's wrapS and wrapT reach the map, each by its own: MIRRORED_REPEAT in s, CLAMP_TO_EDGE
+// in t (the lookup tests are in texture_test.cpp).
+TEST(Gltf, SamplerWrapsEachAxis) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::temp_directory_path() / ("pt_gltf_wrap_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    for (const char* file : {"bin_and_image.bin", "checker.png"}) fs::copy_file(kGltf + file, dir / file);
+    std::ifstream in(kGltf + "bin_and_image.gltf");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string source = "\"source\": 0";
+    ASSERT_NE(text.find(source), std::string::npos);
+    text.replace(text.find(source), source.size(), source + ", \"sampler\": 0");
+    text.insert(text.rfind('}'), ", \"samplers\": [{\"wrapS\": 33648, \"wrapT\": 33071}]");
+    std::ofstream(dir / "wrap.gltf") << text;
+    Warnings w;
+    Scene scene = loadScene((dir / "wrap.gltf").string(), w);
+    fs::remove_all(dir);
+    ASSERT_EQ(scene.materials.size(), 1u);
+    EXPECT_EQ(scene.materials[0].kdMap.wrapU, TextureWrap::Mirror);
+    EXPECT_EQ(scene.materials[0].kdMap.wrapV, TextureWrap::Clamp);
+    for (const std::string& warning : w.messages()) EXPECT_EQ(warning.find("MIRRORED"), std::string::npos) << warning;
 }
 
 TEST(Gltf, AlphaModesCoverAsSpecified) {

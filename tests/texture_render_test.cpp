@@ -135,7 +135,7 @@ TEST(TextureRender, BumpRampIsTiltedNormal) {
     Material plain = m;
     m.bumpMap = mapOf(mapped.textures->add(rampTexture(64, 2)), TextureChannel::R);
     m.bumpMap.bumpScale = 1.5f;
-    m.bumpMap.clamp = true;
+    m.bumpMap.wrapU = m.bumpMap.wrapV = TextureWrap::Clamp;
     addPlane(mapped, m, Vec3(0.0f), Vec2(0.1f), Vec2(0.9f));
     Scene reference = litPlane();
     addPlane(reference, plain, glm::normalize(Vec3(-0.6f, 1.0f, 0.0f)));

@@ -36,7 +36,7 @@ const Footprint kPoint; // a bilinear lookup in the finest level
 TEST(Texture, VRunsUpFromTheBottomRow) {
     TextureCache cache;
     TextureMap m = test::mapOf(cache.add(twoTexels(kGreen, kWhite, true))); // green on top, white at the bottom
-    m.clamp = true;
+    m.wrapU = m.wrapV = TextureWrap::Clamp;
     expectColor(cache.color(m, Vec2(0.5f, 0.25f), kPoint), kWhite, "v 0.25 is the bottom texel");
     expectColor(cache.color(m, Vec2(0.5f, 0.75f), kPoint), kGreen, "v 0.75 is the top texel");
     expectColor(cache.color(m, Vec2(0.5f, 0.5f), kPoint), 0.5f * (kGreen + kWhite), "bilinear between them");
@@ -46,13 +46,38 @@ TEST(Texture, RepeatAndClamp) {
     TextureCache cache;
     TextureMap repeat = test::mapOf(cache.add(twoTexels(kRed, kBlue, false)));
     TextureMap clamp = repeat;
-    clamp.clamp = true;
+    clamp.wrapU = clamp.wrapV = TextureWrap::Clamp;
     expectColor(cache.color(repeat, Vec2(1.25f, 0.5f), kPoint), kRed, "repeat: u 1.25 is u 0.25");
     expectColor(cache.color(clamp, Vec2(1.25f, 0.5f), kPoint), kBlue, "clamp: u 1.25 is the right edge");
     expectColor(cache.color(clamp, Vec2(-3.0f, 0.5f), kPoint), kRed, "clamp: u -3 is the left edge");
     // At the border, repeat blends with the opposite edge and clamp does not.
     expectColor(cache.color(repeat, Vec2(0.0f, 0.5f), kPoint), 0.5f * (kRed + kBlue), "repeat at u 0");
     expectColor(cache.color(clamp, Vec2(0.0f, 0.5f), kPoint), kRed, "clamp at u 0");
+}
+
+// glTF's MIRRORED_REPEAT: [1, 2] is [0, 1] reversed, and so on, both ways; each axis wraps by
+// its own mode.
+TEST(Texture, MirrorAndWrapPerAxis) {
+    TextureCache cache;
+    TextureMap mirror = test::mapOf(cache.add(twoTexels(kRed, kBlue, false)));
+    mirror.wrapU = TextureWrap::Mirror;
+    expectColor(cache.color(mirror, Vec2(0.25f, 0.5f), kPoint), kRed, "mirror: u 0.25 as it is");
+    expectColor(cache.color(mirror, Vec2(1.25f, 0.5f), kPoint), kBlue, "mirror: u 1.25 is u 0.75");
+    expectColor(cache.color(mirror, Vec2(1.75f, 0.5f), kPoint), kRed, "mirror: u 1.75 is u 0.25");
+    expectColor(cache.color(mirror, Vec2(-0.25f, 0.5f), kPoint), kRed, "mirror: u -0.25 is u 0.25");
+    expectColor(cache.color(mirror, Vec2(2.25f, 0.5f), kPoint), kRed, "mirror: u 2.25 is u 0.25");
+    // At the seam, mirroring meets the same texel: no blend with the opposite edge.
+    expectColor(cache.color(mirror, Vec2(1.0f, 0.5f), kPoint), kBlue, "mirror at u 1");
+    // Far from the unit square, the period 2 keeps the answer.
+    expectColor(cache.color(mirror, Vec2(2e6f + 1.25f, 0.5f), kPoint), kBlue, "mirror: u 2e6 + 1.25 is u 0.75", 0.1f);
+    // u mirrors, v (running across the image's two rows) clamps.
+    TextureMap mixed = test::mapOf(cache.add(twoTexels(kGreen, kWhite, true)));
+    mixed.wrapU = TextureWrap::Mirror;
+    mixed.wrapV = TextureWrap::Clamp;
+    expectColor(cache.color(mixed, Vec2(0.5f, 7.0f), kPoint), kGreen, "clamped v 7 is the top row");
+    expectColor(cache.color(mixed, Vec2(0.5f, -7.0f), kPoint), kWhite, "clamped v -7 is the bottom row");
+    mixed.wrapV = TextureWrap::Repeat;
+    expectColor(cache.color(mixed, Vec2(0.5f, 1.25f), kPoint), kWhite, "repeated v 1.25 is v 0.25");
 }
 
 TEST(Texture, ScaleAndOffset) {
@@ -106,7 +131,7 @@ TEST(Texture, ScalarChannels) {
 TEST(Texture, DerivativesOfARamp) {
     TextureCache cache;
     TextureMap m = test::mapOf(cache.add(test::rampTexture(32, 4)), TextureChannel::R);
-    m.clamp = true;
+    m.wrapU = m.wrapV = TextureWrap::Clamp;
     Vec2 d;
     float h = cache.scalar(m, Vec2(0.4f, 0.5f), kPoint, d);
     EXPECT_NEAR(h, 0.4f, 1e-5f);
@@ -163,7 +188,8 @@ TEST(Texture, MapOptionsAndNamesWithSpaces) {
     ASSERT_TRUE(m.used()) << (p.warnings.messages().empty() ? "" : p.warnings.messages()[0]);
     EXPECT_EQ(m.scale, Vec2(2.0f, 3.0f));
     EXPECT_EQ(m.offset, Vec2(0.5f, 0.25f));
-    EXPECT_TRUE(m.clamp);
+    EXPECT_EQ(m.wrapU, TextureWrap::Clamp);
+    EXPECT_EQ(m.wrapV, TextureWrap::Clamp);
     EXPECT_EQ((*p.scene.textures)[0].width, 128);
     ASSERT_EQ(p.warnings.messages().size(), 1u);
     EXPECT_NE(p.warnings.messages()[0].find("test.mtl:2: map_Kd: option -bm has no effect on this map"), std::string::npos);

@@ -131,6 +131,13 @@ glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& what) {
 }
 
 // v / |v| in double, or 0 for a zero vector.
+// A sampler's wrapS or wrapT (the document check allows only these three values).
+TextureWrap wrapOf(int mode) {
+    if (mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return TextureWrap::Clamp;
+    if (mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return TextureWrap::Mirror;
+    return TextureWrap::Repeat;
+}
+
 glm::dvec3 unitOrZero(const glm::dvec3& v) {
     double length = glm::length(v);
     return length > 0.0 && std::isfinite(length) ? v / length : glm::dvec3(0.0);
@@ -411,12 +418,8 @@ private:
         const tinygltf::Texture& tex = model_.textures[size_t(index)];
         if (tex.sampler >= 0 && size_t(tex.sampler) < model_.samplers.size()) {
             const tinygltf::Sampler& s = model_.samplers[size_t(tex.sampler)];
-            map.clamp = s.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE || s.wrapT == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
-            if ((s.wrapS == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT || s.wrapT == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) &&
-                !warnedMirror_) {
-                warnings_.add(what + ": MIRRORED_REPEAT wrapping is taken as REPEAT");
-                warnedMirror_ = true;
-            }
+            map.wrapU = wrapOf(s.wrapS);
+            map.wrapV = wrapOf(s.wrapT);
         }
         Vec2 offset(0.0f), scale(1.0f);
         auto t = extensions.find("KHR_texture_transform");
@@ -684,7 +687,7 @@ private:
     std::map<std::pair<int, bool>, int> decoded_;
     int constant_ = -1;
     size_t skippedPrimitives_ = 0;
-    bool warnedColor_ = false, warnedMirror_ = false, warnedTexCoord_ = false, warnedBrightColors_ = false,
+    bool warnedColor_ = false, warnedTexCoord_ = false, warnedBrightColors_ = false,
          warnedTangentSign_ = false;
     bool warnedMixedSets_ = false, warnedSpecularTexture_ = false, warnedTransmissionTexture_ = false, warnedThinWalled_ = false,
          warnedAttenuation_ = false;

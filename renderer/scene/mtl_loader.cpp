@@ -170,7 +170,7 @@ TextureMap MtlParser::loadTexture(std::string_view spec, std::string_view keywor
         } else if (option == "-clamp") {
             std::string_view onOff = t.word();
             if (onOff != "on" && onOff != "off") t.fail(kw + " -clamp: expected on or off, found \"" + std::string(onOff) + "\"");
-            map.clamp = onOff == "on";
+            map.wrapU = map.wrapV = onOff == "on" ? TextureWrap::Clamp : TextureWrap::Repeat;
         } else if (option == "-bm") {
             float bm = numbers(option, 1)[0];
             if (std::abs(bm) > kMaxCoordinate) t.fail(kw + " -bm: " + shortNumber(bm) + " is beyond 1e12");

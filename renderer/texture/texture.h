@@ -26,6 +26,10 @@ struct Texture {
     double bytes() const { return double(texels.size()) * sizeof(float); }
 };
 
+// How a lookup outside [0, 1] finds its texels, along one axis: glTF's sampler wrapS and wrapT
+// (REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT); the MTL's -clamp on sets both axes to Clamp.
+enum class TextureWrap : uint8_t { Repeat, Clamp, Mirror };
+
 // Which value a scalar map takes from its texture (-imfchan).
 enum class TextureChannel : uint8_t { Rgb, R, G, B, Alpha, Luminance };
 
@@ -33,7 +37,7 @@ enum class TextureChannel : uint8_t { Rgb, R, G, B, Alpha, Luminance };
 struct TextureMap {
     int texture = -1;               // index into the scene's TextureCache; -1: no map
     Vec2 scale{1.0f}, offset{0.0f}; // -s and -o: the lookup is at uv * scale + offset
-    bool clamp = false;             // -clamp on: uv outside [0, 1] takes the edge's texels
+    TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat;
     TextureChannel channel = TextureChannel::Rgb; // colour maps: Rgb; scalar maps: -imfchan
     float bumpScale = 1.0f;         // -bm: height scale of bump maps, xy scale of normal maps
 

@@ -119,18 +119,41 @@ double TextureCache::bytes() const {
     return sum;
 }
 
+namespace {
+
+OIIO::TextureOpt::Wrap oiioWrap(TextureWrap wrap) {
+    switch (wrap) {
+    case TextureWrap::Clamp: return OIIO::TextureOpt::WrapClamp;
+    case TextureWrap::Mirror: return OIIO::TextureOpt::WrapMirror;
+    default: return OIIO::TextureOpt::WrapPeriodic;
+    }
+}
+
+// OpenImageIO scales uv to texels in int: a coordinate of 1e10 overflows there. Far from the
+// unit square a repeating coordinate is taken back into it by its period (1, or 2 mirrored),
+// where float still has a fraction; a clamped one stays, as OpenImageIO clamps it first.
+float nearUnitSquare(float x, TextureWrap wrap) {
+    if (std::abs(x) <= 1e6f) return x;
+    switch (wrap) {
+    case TextureWrap::Repeat: return x - std::floor(x);
+    case TextureWrap::Mirror: return x - 2.0f * std::floor(0.5f * x);
+    default: return x;
+    }
+}
+
+} // namespace
+
 void TextureCache::lookup(const TextureMap& map, Vec2 uv, const Footprint& fp, int first, int count, float* out,
                           float* dds, float* ddt) const {
     OIIO::TextureOpt opt;
     opt.firstchannel = first;
-    opt.swrap = opt.twrap = map.clamp ? OIIO::TextureOpt::WrapClamp : OIIO::TextureOpt::WrapPeriodic;
+    opt.swrap = oiioWrap(map.wrapU);
+    opt.twrap = oiioWrap(map.wrapV);
     opt.interpmode = OIIO::TextureOpt::InterpBilinear; // as Mitsuba and Cycles: no bicubic magnification
     opt.anisotropic = 16;
     uv = uv * map.scale + map.offset;
     if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = Vec2(0.0f);
-    // OpenImageIO scales uv to texels in int: a coordinate of 1e10 overflows there. Far from the
-    // unit square a repeating texture is taken back into it (where float still has a fraction).
-    if (!map.clamp && (std::abs(uv.x) > 1e6f || std::abs(uv.y) > 1e6f)) uv -= glm::floor(uv);
+    uv = Vec2(nearUnitSquare(uv.x, map.wrapU), nearUnitSquare(uv.y, map.wrapV));
     Vec2 dx = fp.dx * map.scale, dy = fp.dy * map.scale;
     if (!(std::isfinite(dx.x) && std::isfinite(dx.y) && std::isfinite(dy.x) && std::isfinite(dy.y)))
         dx = dy = Vec2(0.0f); // a bilinear lookup instead
