@@ -80,13 +80,61 @@ TEST(Texture, MirrorAndWrapPerAxis) {
     expectColor(cache.color(mixed, Vec2(0.5f, 1.25f), kPoint), kWhite, "repeated v 1.25 is v 0.25");
 }
 
+// A 4 x 4 texture of 16 distinct colours: texel (column i, row j from the top) holds (i, j, 1).
+Texture sixteenTexels() {
+    Texture t;
+    t.width = t.height = 4;
+    t.channels = 3;
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) t.texels.insert(t.texels.end(), {float(i), float(j), 1.0f});
+    return t;
+}
+
+// KHR_texture_transform's own example: offset [0, 1], rotation pi/2 and scale [0.5, 0.5] read
+// "only the lower left quadrant of the source image, rotated clockwise 90 degrees". Turned
+// clockwise, the quadrant's top-left texel (0, 2) lands at the surface's top-right, its
+// bottom-left (0, 3) at the top-left and its top-right (1, 2) at the bottom-right (pt's v up).
+TEST(Texture, GltfTransformReadsTheSpecExample) {
+    TextureCache cache;
+    TextureMap m = test::mapOf(cache.add(sixteenTexels()));
+    setGltfTransform(m, Vec2(0.0f, 1.0f), 1.57079632679f, Vec2(0.5f));
+    expectColor(cache.color(m, Vec2(0.75f, 0.75f), kPoint), Spectrum(0, 2, 1), "top-right: the quadrant's top-left", 1e-3f);
+    expectColor(cache.color(m, Vec2(0.25f, 0.75f), kPoint), Spectrum(0, 3, 1), "top-left: its bottom-left", 1e-3f);
+    expectColor(cache.color(m, Vec2(0.75f, 0.25f), kPoint), Spectrum(1, 2, 1), "bottom-right: its top-right", 1e-3f);
+    expectColor(cache.color(m, Vec2(0.25f, 0.25f), kPoint), Spectrum(1, 3, 1), "bottom-left: its bottom-right", 1e-3f);
+    // Without rotation, offset and scale alone as before: [0.5, 0.5] from [0, 0.5] is the
+    // lower-left quadrant upright, its top-left texel (0, 2) at the surface's top-left.
+    setGltfTransform(m, Vec2(0.0f, 0.5f), 0.0f, Vec2(0.5f));
+    expectColor(cache.color(m, Vec2(0.25f, 0.75f), kPoint), Spectrum(0, 2, 1), "upright: top-left", 1e-3f);
+    expectColor(cache.color(m, Vec2(0.75f, 0.25f), kPoint), Spectrum(1, 3, 1), "upright: bottom-right", 1e-3f);
+}
+
+// A normal map's x and y follow the texture's s and t: unchanged by a positive scale, turned
+// back by a rotation, and y mirrored by glTF's scale [1, -1].
+TEST(Texture, NormalMapAxesFollowTheTransform) {
+    TextureMap m;
+    auto expectNear = [](Vec2 got, Vec2 want, const char* what) {
+        EXPECT_NEAR(got.x, want.x, 1e-5f) << what;
+        EXPECT_NEAR(got.y, want.y, 1e-5f) << what;
+    };
+    m.linear = scaleMatrix(Vec2(2.0f, 3.0f));
+    expectNear(normalMapToUv(m, Vec2(0.6f, 0.8f)), Vec2(0.6f, 0.8f), "scale");
+    setGltfTransform(m, Vec2(0.0f), 0.0f, Vec2(1.0f, -1.0f));
+    expectNear(normalMapToUv(m, Vec2(0.6f, 0.8f)), Vec2(0.6f, -0.8f), "t mirrored");
+    // Rotated by pi/2: s runs along the surface's -v and t (up the image) along +u, as the spec example's
+    // clockwise turn of the image has it.
+    setGltfTransform(m, Vec2(0.0f), 1.57079632679f, Vec2(1.0f));
+    expectNear(normalMapToUv(m, Vec2(1.0f, 0.0f)), Vec2(0.0f, -1.0f), "s");
+    expectNear(normalMapToUv(m, Vec2(0.0f, 1.0f)), Vec2(1.0f, 0.0f), "t");
+}
+
 TEST(Texture, ScaleAndOffset) {
     TextureCache cache;
     TextureMap m = test::mapOf(cache.add(twoTexels(kRed, kBlue, false)));
     m.offset = Vec2(0.5f, 0.0f);
     expectColor(cache.color(m, Vec2(0.25f, 0.5f), kPoint), kBlue, "-o 0.5 moves u 0.25 to 0.75");
     m.offset = Vec2(0.0f);
-    m.scale = Vec2(2.0f, 1.0f);
+    m.linear = scaleMatrix(Vec2(2.0f, 1.0f));
     expectColor(cache.color(m, Vec2(0.375f, 0.5f), kPoint), kBlue, "-s 2 takes u 0.375 to 0.75");
     expectColor(cache.color(m, Vec2(0.625f, 0.5f), kPoint), kRed, "-s 2 takes u 0.625 to 1.25, repeated");
 }
@@ -127,7 +175,7 @@ TEST(Texture, ScalarChannels) {
 }
 
 // A height ramp rising by 1 across the texture in u: the lookup's derivative is 1 per unit u
-// (and 2 with -s 2), and 0 in v.
+// (and 2 with -s 2), and 0 in v; a rotation turns the gradient with the texture.
 TEST(Texture, DerivativesOfARamp) {
     TextureCache cache;
     TextureMap m = test::mapOf(cache.add(test::rampTexture(32, 4)), TextureChannel::R);
@@ -137,9 +185,16 @@ TEST(Texture, DerivativesOfARamp) {
     EXPECT_NEAR(h, 0.4f, 1e-5f);
     EXPECT_NEAR(d.x, 1.0f, 1e-3f);
     EXPECT_NEAR(d.y, 0.0f, 1e-3f);
-    m.scale = Vec2(2.0f, 1.0f);
+    m.linear = scaleMatrix(Vec2(2.0f, 1.0f));
     cache.scalar(m, Vec2(0.2f, 0.5f), kPoint, d);
     EXPECT_NEAR(d.x, 2.0f, 2e-3f);
+    // Turned by pi/2 (glTF's rotation, the image clockwise): s = 1 - v, so the height falls with
+    // v and does not change with u.
+    setGltfTransform(m, Vec2(0.0f), 1.57079632679f, Vec2(1.0f));
+    h = cache.scalar(m, Vec2(0.5f, 0.6f), kPoint, d);
+    EXPECT_NEAR(h, 0.4f, 1e-3f);
+    EXPECT_NEAR(d.x, 0.0f, 1e-3f);
+    EXPECT_NEAR(d.y, -1.0f, 1e-3f);
 }
 
 // The same 8-bit grey of 128 is sRGB-encoded as a colour map and linear as a data map; float
@@ -186,7 +241,7 @@ TEST(Texture, MapOptionsAndNamesWithSpaces) {
     Parsed p = parse("newmtl A\nmap_Kd -s 2 3 -o 0.5 0.25 1 -clamp on -bm 2 my checker.png\n", dir.string());
     const TextureMap& m = p.scene.materials.at(0).kdMap;
     ASSERT_TRUE(m.used()) << (p.warnings.messages().empty() ? "" : p.warnings.messages()[0]);
-    EXPECT_EQ(m.scale, Vec2(2.0f, 3.0f));
+    EXPECT_EQ(m.linear, scaleMatrix(Vec2(2.0f, 3.0f)));
     EXPECT_EQ(m.offset, Vec2(0.5f, 0.25f));
     EXPECT_EQ(m.wrapU, TextureWrap::Clamp);
     EXPECT_EQ(m.wrapV, TextureWrap::Clamp);
@@ -195,7 +250,7 @@ TEST(Texture, MapOptionsAndNamesWithSpaces) {
     EXPECT_NE(p.warnings.messages()[0].find("test.mtl:2: map_Kd: option -bm has no effect on this map"), std::string::npos);
 
     Parsed one = parse("newmtl A\nmap_Kd -s 4 my checker.png\n", dir.string());
-    EXPECT_EQ(one.scene.materials.at(0).kdMap.scale, Vec2(4.0f, 1.0f)); // v keeps its default
+    EXPECT_EQ(one.scene.materials.at(0).kdMap.linear, scaleMatrix(Vec2(4.0f, 1.0f))); // v keeps its default
 
     expectErrors(dir.string(), {
                    {"map_Kd -clamp maybe my checker.png", "test.mtl:2: map_Kd -clamp: expected on or off, found \"maybe\""},

@@ -408,9 +408,8 @@ private:
         return cached;
     }
 
-    // A texture reference with its sampler's wrap mode and KHR_texture_transform. glTF's uv has v
-    // down the image and pt's up, so a transform u' = o + s u becomes, in pt's v = 1 - v_gltf,
-    // v' = (1 - o.y - s.y) + s.y v.
+    // A texture reference with its sampler's wrap modes and KHR_texture_transform (in pt's uv,
+    // whose v runs up where glTF's runs down: setGltfTransform).
     TextureMap textureMap(int index, int texCoord, const tinygltf::ExtensionMap& extensions, bool colour,
                           const std::string& what) {
         TextureMap map;
@@ -422,6 +421,7 @@ private:
             map.wrapV = wrapOf(s.wrapT);
         }
         Vec2 offset(0.0f), scale(1.0f);
+        float rotation = 0.0f;
         auto t = extensions.find("KHR_texture_transform");
         if (t != extensions.end()) {
             const tinygltf::Value& v = t->second;
@@ -429,8 +429,7 @@ private:
                 offset = Vec2(float(v.Get("offset").Get(0).GetNumberAsDouble()), float(v.Get("offset").Get(1).GetNumberAsDouble()));
             if (v.Has("scale") && v.Get("scale").ArrayLen() == 2)
                 scale = Vec2(float(v.Get("scale").Get(0).GetNumberAsDouble()), float(v.Get("scale").Get(1).GetNumberAsDouble()));
-            if (v.Has("rotation") && v.Get("rotation").GetNumberAsDouble() != 0.0)
-                warnings_.add(what + ": KHR_texture_transform rotation is ignored (offset and scale are applied)");
+            if (v.Has("rotation")) rotation = float(v.Get("rotation").GetNumberAsDouble());
             if (v.Has("texCoord")) texCoord = v.Get("texCoord").GetNumberAsInt();
         }
         // One set of texture coordinates per material: the first texture's (0 or 1) serves all.
@@ -443,10 +442,10 @@ private:
         else if (texCoord != materialUvSet_)
             warnOnce(warnedMixedSets_, what + ": reads TEXCOORD_" + std::to_string(texCoord) + " where the material's other "
                                        "textures read TEXCOORD_" + std::to_string(materialUvSet_) + "; those are used");
-        if (!std::isfinite(offset.x) || !std::isfinite(offset.y) || !std::isfinite(scale.x) || !std::isfinite(scale.y))
+        if (!std::isfinite(offset.x) || !std::isfinite(offset.y) || !std::isfinite(scale.x) || !std::isfinite(scale.y) ||
+            !std::isfinite(rotation))
             throw LoadError(what + ": KHR_texture_transform has a value that is not finite");
-        map.scale = scale;
-        map.offset = Vec2(offset.x, 1.0f - offset.y - scale.y);
+        setGltfTransform(map, offset, rotation, scale);
         return map;
     }
 

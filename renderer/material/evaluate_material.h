@@ -35,7 +35,8 @@ inline Vec3 perturbedNormal(const Material& m, const TextureCache& textures, con
         if (t == Vec3(0.0f)) t = safeNormalize(sp.dpdu - n * glm::dot(n, sp.dpdu));
         if (t == Vec3(0.0f)) t = Frame(n).s; // no uv direction at all: the map's x and y are arbitrary
         Vec3 b = sp.bitangentSign * glm::cross(n, t);
-        mapped = (c.x * m.normalMap.bumpScale) * t + (c.y * m.normalMap.bumpScale) * b + c.z * n;
+        Vec2 xy = m.normalMap.bumpScale * normalMapToUv(m.normalMap, Vec2(c.x, c.y));
+        mapped = xy.x * t + xy.y * b + c.z * n;
     } else if (m.bumpMap.used()) {
         if (sp.dpdu == Vec3(0.0f) || sp.dpdv == Vec3(0.0f)) return n;
         Vec2 dh;

@@ -166,7 +166,8 @@ TextureMap MtlParser::loadTexture(std::string_view spec, std::string_view keywor
         if (option == "-s" || option == "-o") {
             std::vector<float> v = numbers(option, 3);
             Vec2 uv(v[0], v.size() > 1 ? v[1] : (option == "-s" ? 1.0f : 0.0f));
-            (option == "-s" ? map.scale : map.offset) = uv;
+            if (option == "-s") map.linear = scaleMatrix(uv);
+            else map.offset = uv;
         } else if (option == "-clamp") {
             std::string_view onOff = t.word();
             if (onOff != "on" && onOff != "off") t.fail(kw + " -clamp: expected on or off, found \"" + std::string(onOff) + "\"");

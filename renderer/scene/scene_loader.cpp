@@ -96,7 +96,8 @@ static void checkMaps(const Scene& scene, const Material& m) {
         {&m.metallicMap, "metallic"}, {&m.normalMap, "normal"}, {&m.bumpMap, "bump"}, {&m.alphaMap, "coverage"},
         {&m.emissionMap, "emission"}};
     for (const auto& [map, what] : maps) {
-        float peak = std::max({std::abs(map->scale.x), std::abs(map->scale.y), std::abs(map->offset.x), std::abs(map->offset.y)});
+        float peak = std::max({std::abs(map->linear[0].x), std::abs(map->linear[0].y), std::abs(map->linear[1].x),
+                               std::abs(map->linear[1].y), std::abs(map->offset.x), std::abs(map->offset.y)});
         if (map->used() && !(peak <= kMaxTextureTransform))
             throw LoadError(scene.path + ": material \"" + m.name + "\": its " + what + " texture's coordinate transform has " +
                             shortNumber(peak) + ", beyond +-1e4, where float texture coordinates no longer address single "

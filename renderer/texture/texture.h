@@ -4,6 +4,7 @@
 
 #include "core/math.h"
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -36,13 +37,41 @@ enum class TextureChannel : uint8_t { Rgb, R, G, B, Alpha, Luminance };
 // How a material uses a texture: the MTL map options that change the lookup.
 struct TextureMap {
     int texture = -1;               // index into the scene's TextureCache; -1: no map
-    Vec2 scale{1.0f}, offset{0.0f}; // -s and -o: the lookup is at uv * scale + offset
+    // The lookup is at linear * uv + offset, in pt's uv (v up): the MTL's -s (a diagonal) and -o,
+    // or glTF's KHR_texture_transform (gltfTextureTransform).
+    glm::mat2 linear{1.0f};
+    Vec2 offset{0.0f};
     TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat;
     TextureChannel channel = TextureChannel::Rgb; // colour maps: Rgb; scalar maps: -imfchan
     float bumpScale = 1.0f;         // -bm: height scale of bump maps, xy scale of normal maps
 
     bool used() const { return texture >= 0; }
 };
+
+// A diagonal `linear`: the MTL's -s.
+inline glm::mat2 scaleMatrix(Vec2 s) { return glm::mat2(s.x, 0.0f, 0.0f, s.y); }
+
+// KHR_texture_transform in pt's uv. The extension maps glTF's uv (v down the image) to
+// offset + R (scale * uv), where R turns by `rotation` as its example has it: offset [0, 1],
+// rotation pi/2 and scale 0.5 read the image's lower-left quadrant, turned clockwise, so
+// R = [[c, s], [-s, c]]. pt's v is 1 - glTF's on both sides of the map, so pt's transform is
+// that one conjugated by the flip (u, v) -> (u, 1 - v).
+inline void setGltfTransform(TextureMap& map, Vec2 offset, float rotation, Vec2 scale) {
+    const float c = std::cos(rotation), s = std::sin(rotation);
+    const float m00 = c * scale.x, m01 = s * scale.y, m10 = -s * scale.x, m11 = c * scale.y; // R * scale
+    map.linear = glm::mat2(m00, -m10, -m01, m11); // columns: the flip's D M D
+    map.offset = Vec2(offset.x + m01, 1.0f - offset.y - m11);
+}
+
+// A normal map's x and y lie along the texture's s and t, which `linear` turns (and may mirror)
+// against the surface's u and v: the tangent-frame coefficients of (x, y) are the columns of
+// linear's inverse, each made unit. The identity for a map without a transform or with -s > 0.
+inline Vec2 normalMapToUv(const TextureMap& map, Vec2 xy) {
+    const glm::mat2 inverse = glm::inverse(map.linear);
+    const float l0 = glm::length(inverse[0]), l1 = glm::length(inverse[1]);
+    if (!(l0 > 0.0f && l1 > 0.0f && std::isfinite(l0) && std::isfinite(l1))) return xy;
+    return xy.x * (inverse[0] / l0) + xy.y * (inverse[1] / l1);
+}
 
 // Where a lookup filters: two axes in uv (before -s and -o) of the ellipse that a ray cone
 // covers at the hit. Zero axes give a bilinear lookup in the finest level.

@@ -151,10 +151,10 @@ void TextureCache::lookup(const TextureMap& map, Vec2 uv, const Footprint& fp, i
     opt.twrap = oiioWrap(map.wrapV);
     opt.interpmode = OIIO::TextureOpt::InterpBilinear; // as Mitsuba and Cycles: no bicubic magnification
     opt.anisotropic = 16;
-    uv = uv * map.scale + map.offset;
+    uv = map.linear * uv + map.offset;
     if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = Vec2(0.0f);
     uv = Vec2(nearUnitSquare(uv.x, map.wrapU), nearUnitSquare(uv.y, map.wrapV));
-    Vec2 dx = fp.dx * map.scale, dy = fp.dy * map.scale;
+    Vec2 dx = map.linear * fp.dx, dy = map.linear * fp.dy;
     if (!(std::isfinite(dx.x) && std::isfinite(dx.y) && std::isfinite(dy.x) && std::isfinite(dy.y)))
         dx = dy = Vec2(0.0f); // a bilinear lookup instead
     // OIIO's t runs down from the top row; OBJ's v runs up from the bottom.
@@ -205,8 +205,8 @@ float TextureCache::scalar(const TextureMap& map, Vec2 uv, const Footprint& fp, 
     channelRange(textures_[size_t(map.texture)], map.channel, first, count);
     float v[3], ds[3], dt[3];
     lookup(map, uv, fp, first, count, v, ds, dt);
-    // d/du = d/ds * ds/du, with s = u * scale + offset.
-    dValueDuv = Vec2(pick(map, ds, count) * map.scale.x, pick(map, dt, count) * map.scale.y);
+    // d/duv = linear^T d/dst, with st = linear uv + offset.
+    dValueDuv = glm::transpose(map.linear) * Vec2(pick(map, ds, count), pick(map, dt, count));
     return pick(map, v, count);
 }
 
