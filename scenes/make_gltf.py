@@ -17,6 +17,7 @@ keeps its .bin and .png beside it, as exported files do. Run from anywhere; rewr
   alpha_modes.gltf    OPAQUE, MASK and BLEND quads in front of a red wall
   cameras.gltf        a perspective camera with aspect ratio 2 and an orthographic one
   bin_and_image.gltf  a quad whose buffer and base colour texture are files beside it
+  texture_transform.gltf  one image through five sampler wraps and KHR_texture_transforms
 """
 import base64
 import json
@@ -355,6 +356,38 @@ def cameras():
     g.write("cameras.gltf")
 
 
+def texture_transform():
+    """Five emissive quads, each drawing one 32 x 32 image (quadrants red, green, blue, yellow
+    from the top left, each with a white F) through a different sampler or KHR_texture_transform:
+    as it is; the extension's own example (offset [0, 1], rotation pi/2, scale 0.5: the lower-left,
+    blue quadrant turned clockwise); rotation pi/2 alone (the image turned clockwise); offset
+    [0, 1] with scale [1, -1] (upside down); MIRRORED_REPEAT at scale 2 (four copies, mirrored)."""
+    g = Gltf()
+    colours = [[(200, 40, 40), (40, 160, 40)], [(40, 60, 200), (220, 200, 40)]]
+    def pixel(x, y):
+        qx, qy = x % 16, y % 16
+        f = 4 <= qx < 6 and 3 <= qy < 13 or 3 <= qy < 5 and 4 <= qx < 12 or 7 <= qy < 9 and 4 <= qx < 10
+        return (255, 255, 255) if f else colours[y // 16][x // 16]
+    image = g.image(png(32, 32, 3, pixel))
+    mirrored = g.image(png(32, 32, 3, pixel), sampler=0)
+    g.d["samplers"] = [{"wrapS": 33648, "wrapT": 33648}]
+    looks = [("AsItIs", image, None), ("SpecExample", image, {"offset": [0, 1], "rotation": math.pi / 2, "scale": [0.5, 0.5]}),
+             ("Rotated", image, {"rotation": math.pi / 2}), ("UpsideDown", image, {"offset": [0, 1], "scale": [1, -1]}),
+             ("Mirrored", mirrored, {"scale": [2, 2]})]
+    for i, (name, tex, transform) in enumerate(looks):
+        info = {"index": tex}
+        if transform:
+            info["extensions"] = {"KHR_texture_transform": transform}
+        m = g.material(name=name, pbrMetallicRoughness={"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0},
+                       emissiveTexture=info, emissiveFactor=[1.0, 1.0, 1.0])
+        x = 1.2 * (i - 2)
+        g.node(mesh=quad(g, [(x - 0.5, -0.5, 0), (x + 0.5, -0.5, 0), (x + 0.5, 0.5, 0), (x - 0.5, 0.5, 0)], (0, 0, 1), m),
+               name=name)
+    g.d["extensionsUsed"] = ["KHR_texture_transform"]
+    camera_node(g, [0.0, 0.0, 6.0], [0.0, 0.0, 0.0], 12.0, aspect=5.0)
+    g.write("texture_transform.gltf")
+
+
 def bin_and_image():
     g = Gltf()
     with open(os.path.join(HERE, "checker.png"), "wb") as f:
@@ -531,6 +564,7 @@ if __name__ == "__main__":
     alpha_modes()
     cameras()
     bin_and_image()
+    texture_transform()
     vertex_colors()
     tangents()
     materials()
