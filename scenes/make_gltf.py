@@ -357,19 +357,20 @@ def cameras():
 
 
 def texture_transform():
-    """Five emissive quads, each drawing one 32 x 32 image (quadrants red, green, blue, yellow
+    """Five emissive quads, each drawing one 128 x 128 image (quadrants red, green, blue, yellow
     from the top left, each with a white F) through a different sampler or KHR_texture_transform:
     as it is; the extension's own example (offset [0, 1], rotation pi/2, scale 0.5: the lower-left,
     blue quadrant turned clockwise); rotation pi/2 alone (the image turned clockwise); offset
     [0, 1] with scale [1, -1] (upside down); MIRRORED_REPEAT at scale 2 (four copies, mirrored)."""
     g = Gltf()
     colours = [[(200, 40, 40), (40, 160, 40)], [(40, 60, 200), (220, 200, 40)]]
-    def pixel(x, y):
+    def pixel(x, y):  # 4 x 4 texels a cell: the quads minify it, where 8-bit filtering orders agree
+        x, y = x // 4, y // 4
         qx, qy = x % 16, y % 16
         f = 4 <= qx < 6 and 3 <= qy < 13 or 3 <= qy < 5 and 4 <= qx < 12 or 7 <= qy < 9 and 4 <= qx < 10
         return (255, 255, 255) if f else colours[y // 16][x // 16]
-    image = g.image(png(32, 32, 3, pixel))
-    mirrored = g.image(png(32, 32, 3, pixel), sampler=0)
+    image = g.image(png(128, 128, 3, pixel))
+    mirrored = g.image(png(128, 128, 3, pixel), sampler=0)
     g.d["samplers"] = [{"wrapS": 33648, "wrapT": 33648}]
     looks = [("AsItIs", image, None), ("SpecExample", image, {"offset": [0, 1], "rotation": math.pi / 2, "scale": [0.5, 0.5]}),
              ("Rotated", image, {"rotation": math.pi / 2}), ("UpsideDown", image, {"offset": [0, 1], "scale": [1, -1]}),
