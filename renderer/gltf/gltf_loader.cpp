@@ -130,7 +130,6 @@ glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& what) {
     return m;
 }
 
-// v / |v| in double, or 0 for a zero vector.
 // A sampler's wrapS or wrapT (the document check allows only these three values).
 TextureWrap wrapOf(int mode) {
     if (mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return TextureWrap::Clamp;
@@ -138,6 +137,7 @@ TextureWrap wrapOf(int mode) {
     return TextureWrap::Repeat;
 }
 
+// v / |v| in double, or 0 for a zero vector.
 glm::dvec3 unitOrZero(const glm::dvec3& v) {
     double length = glm::length(v);
     return length > 0.0 && std::isfinite(length) ? v / length : glm::dvec3(0.0);

@@ -38,7 +38,7 @@ enum class TextureChannel : uint8_t { Rgb, R, G, B, Alpha, Luminance };
 struct TextureMap {
     int texture = -1;               // index into the scene's TextureCache; -1: no map
     // The lookup is at linear * uv + offset, in pt's uv (v up): the MTL's -s (a diagonal) and -o,
-    // or glTF's KHR_texture_transform (gltfTextureTransform).
+    // or glTF's KHR_texture_transform (setGltfTransform).
     glm::mat2 linear{1.0f};
     Vec2 offset{0.0f};
     TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat;
@@ -73,7 +73,7 @@ inline Vec2 normalMapToUv(const TextureMap& map, Vec2 xy) {
     return xy.x * (inverse[0] / l0) + xy.y * (inverse[1] / l1);
 }
 
-// Where a lookup filters: two axes in uv (before -s and -o) of the ellipse that a ray cone
+// Where a lookup filters: two axes in uv (before the map's transform) of the ellipse that a ray cone
 // covers at the hit. Zero axes give a bilinear lookup in the finest level.
 struct Footprint {
     Vec2 dx{0.0f}, dy{0.0f};
