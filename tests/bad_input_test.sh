@@ -135,15 +135,16 @@ check sparse_2GB_mtl 1 "sparse.mtl:1: contains a NUL byte" $(render sparse.obj s
 truncate -s 8G sparse.mtl
 check sparse_8GB_mtl 1 "sparse.mtl:1: contains a NUL byte" $(render sparse.obj sparse8)
 rm -f sparse.mtl
-# A PNG whose header declares 65536 x 65536 (51 GB as texels) and holds no pixels.
+# A PNG whose header declares 1000000 x 1000000 (4 TB as 8-bit texels with their mip levels: beyond a
+# quarter of any machine's memory) and holds no pixels.
 /usr/bin/python3 -c "
 import struct, zlib
 def chunk(t, d): return struct.pack('>I', len(d)) + t + d + struct.pack('>I', zlib.crc32(t + d))
-open('huge.png', 'wb').write(b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', 65536, 65536, 8, 2, 0, 0, 0))
+open('huge.png', 'wb').write(b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', 1000000, 1000000, 8, 2, 0, 0, 0))
                              + chunk(b'IDAT', zlib.compress(b'')) + chunk(b'IEND', b''))"
 printf 'newmtl T\nmap_Kd huge.png\n' > huge_tex.mtl
 printf 'mtllib huge_tex.mtl\n%susemtl T\nf 1 2 3\n' "$tri" > huge_tex.obj
-check texture_beyond_budget 1 'huge_tex.mtl:2: map_Kd: texture "huge.png" is too large: 65536x65536' $(render huge_tex.obj ht)
+check texture_beyond_budget 1 'huge_tex.mtl:2: map_Kd: texture "huge.png" is too large: 1000000x1000000' $(render huge_tex.obj ht)
 
 # Values that would overflow float somewhere in the renderer: refused at their line.
 light() { printf 'newlight L\nlightposition 0.3 0.3 1\n%s\n' "$1" > light.mtl; printf 'mtllib camera.mtl\nmtllib light.mtl\n%sf 1 2 3\n' "$tri" > light.obj; }

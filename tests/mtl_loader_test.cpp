@@ -145,7 +145,7 @@ TEST(Mtl, TextureLoadsAndMissingTextureWarns) {
     const Texture& t = (*ok.scene.textures)[0];
     EXPECT_EQ(t.width, 128);
     // The checker's bright squares are sRGB 0.9 (linear 0.787).
-    EXPECT_NEAR(t.texels[0], 0.787f, 0.01f);
+    EXPECT_NEAR(t.texel(0, 0, 0), 0.787f, 0.01f);
 
     Parsed missing = parse("newmtl T\nmap_Kd nothere.png\n");
     EXPECT_FALSE(missing.material("T").kdMap.used());

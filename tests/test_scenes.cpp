@@ -122,24 +122,18 @@ TextureMap mapOf(int texture, TextureChannel channel) {
 }
 
 Texture checkerTexture() {
-    Texture t;
-    t.width = t.height = 64;
-    t.channels = 3;
+    std::vector<float> texels;
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < 64; ++x)
-            for (int c = 0; c < 3; ++c) t.texels.push_back(float(((x / 8) + (y / 8)) % 2));
-    return t;
+            for (int c = 0; c < 3; ++c) texels.push_back(float(((x / 8) + (y / 8)) % 2));
+    return Texture::fromFloats(64, 64, 3, texels);
 }
 
 Texture rampTexture(int width, int height) {
-    Texture t;
-    t.colour = false;
-    t.width = width;
-    t.height = height;
-    t.channels = 1;
+    std::vector<float> texels;
     for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) t.texels.push_back((x + 0.5f) / float(width));
-    return t;
+        for (int x = 0; x < width; ++x) texels.push_back((x + 0.5f) / float(width));
+    return Texture::fromFloats(width, height, 1, texels, false);
 }
 
 } // namespace pt::test

@@ -29,12 +29,10 @@ void addUvQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material, 
 
 // A texture of one value per channel, everywhere.
 int constantTexture(Scene& scene, std::vector<float> value, bool colour) {
-    Texture t;
+    std::vector<float> texels;
+    for (int i = 0; i < 16; ++i) texels.insert(texels.end(), value.begin(), value.end());
+    Texture t = Texture::fromFloats(4, 4, int(value.size()), texels, colour);
     t.path = "(constant)";
-    t.colour = colour;
-    t.width = t.height = 4;
-    t.channels = int(value.size());
-    for (int i = 0; i < 16; ++i) t.texels.insert(t.texels.end(), value.begin(), value.end());
     return scene.textures->add(std::move(t));
 }
 

@@ -17,12 +17,8 @@ namespace {
 const Spectrum kRed(1, 0, 0), kBlue(0, 0, 1), kGreen(0, 1, 0), kWhite(1);
 
 Texture twoTexels(Spectrum first, Spectrum second, bool vertical) {
-    Texture t;
-    t.width = vertical ? 1 : 2;
-    t.height = vertical ? 2 : 1;
-    t.channels = 3;
-    t.texels = {first.x, first.y, first.z, second.x, second.y, second.z}; // row 0 is the top of the image
-    return t;
+    // Row 0 is the top of the image.
+    return Texture::fromFloats(vertical ? 1 : 2, vertical ? 2 : 1, 3, {first.x, first.y, first.z, second.x, second.y, second.z});
 }
 
 void expectColor(Spectrum got, Spectrum want, const char* what, float tolerance = 1e-5f) {
@@ -82,12 +78,10 @@ TEST(Texture, MirrorAndWrapPerAxis) {
 
 // A 4 x 4 texture of 16 distinct colours: texel (column i, row j from the top) holds (i, j, 1).
 Texture sixteenTexels() {
-    Texture t;
-    t.width = t.height = 4;
-    t.channels = 3;
+    std::vector<float> texels;
     for (int j = 0; j < 4; ++j)
-        for (int i = 0; i < 4; ++i) t.texels.insert(t.texels.end(), {float(i), float(j), 1.0f});
-    return t;
+        for (int i = 0; i < 4; ++i) texels.insert(texels.end(), {float(i), float(j), 1.0f});
+    return Texture::fromFloats(4, 4, 3, texels);
 }
 
 // KHR_texture_transform's own example: offset [0, 1], rotation pi/2 and scale [0.5, 0.5] read
@@ -157,12 +151,7 @@ TEST(Texture, MinificationAveragesLinearValues) {
 // -imfchan: r, g, b, alpha and luminance of an RGBA data texture.
 TEST(Texture, ScalarChannels) {
     TextureCache cache;
-    Texture t;
-    t.colour = false;
-    t.width = t.height = 1;
-    t.channels = 4;
-    t.texels = {0.1f, 0.2f, 0.4f, 0.8f};
-    TextureMap m = test::mapOf(cache.add(std::move(t)));
+    TextureMap m = test::mapOf(cache.add(Texture::fromFloats(1, 1, 4, {0.1f, 0.2f, 0.4f, 0.8f}, false)));
     const std::pair<TextureChannel, float> want[] = {{TextureChannel::R, 0.1f},
                                                      {TextureChannel::G, 0.2f},
                                                      {TextureChannel::B, 0.4f},
@@ -197,24 +186,31 @@ TEST(Texture, DerivativesOfARamp) {
     EXPECT_NEAR(d.y, -1.0f, 1e-3f);
 }
 
-// The same 8-bit grey of 128 is sRGB-encoded as a colour map and linear as a data map; float
-// files are linear either way.
+// The same 8-bit grey of 128 is sRGB-encoded as a colour map and linear as a data map; float and
+// half files are linear either way. Each is held at its file's depth.
 TEST(Texture, SrgbAgainstLinear) {
     namespace fs = std::filesystem;
     fs::path dir = fs::path(::testing::TempDir()) / "pt_texture_encoding";
     fs::create_directories(dir);
-    std::string png = (dir / "grey.png").string(), exr = (dir / "grey.exr").string();
+    std::string png = (dir / "grey.png").string(), exr = (dir / "grey.exr").string(), half = (dir / "grey_half.exr").string();
     ASSERT_EQ(std::system(("oiiotool --create 4x4 3 --fill:color=0.50196,0.50196,0.50196 4x4 -d uint8 -o " + png +
                            " >/dev/null 2>&1").c_str()), 0);
     ASSERT_EQ(std::system(("oiiotool --create 4x4 3 --fill:color=0.5,0.5,0.5 4x4 -d float -o " + exr +
                            " >/dev/null 2>&1").c_str()), 0);
-    for (auto [file, colour, want] : std::vector<std::tuple<std::string, bool, float>>{
-             {png, true, srgbToLinear(128.0f / 255.0f)}, {png, false, 128.0f / 255.0f}, {exr, true, 0.5f}, {exr, false, 0.5f}}) {
+    ASSERT_EQ(std::system(("oiiotool --create 4x4 3 --fill:color=0.5,0.5,0.5 4x4 -d half -o " + half +
+                           " >/dev/null 2>&1").c_str()), 0);
+    for (auto [file, colour, want, format] : std::vector<std::tuple<std::string, bool, float, TexelFormat>>{
+             {png, true, srgbToLinear(128.0f / 255.0f), TexelFormat::Srgb8},
+             {png, false, 128.0f / 255.0f, TexelFormat::Unorm8},
+             {exr, true, 0.5f, TexelFormat::Float},
+             {exr, false, 0.5f, TexelFormat::Float},
+             {half, true, 0.5f, TexelFormat::Half}}) {
         Texture t;
         std::string error;
         bool tooLarge;
         ASSERT_TRUE(readTexture(file, colour, t, error, 1e9, tooLarge)) << error;
-        EXPECT_NEAR(t.texels[0], want, 1e-4f) << file << (colour ? " as colour" : " as data");
+        EXPECT_NEAR(t.texel(0, 0, 0), want, 1e-4f) << file << (colour ? " as colour" : " as data");
+        EXPECT_EQ(int(t.format), int(format)) << file << (colour ? " as colour" : " as data");
     }
 }
 

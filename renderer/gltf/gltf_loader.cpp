@@ -452,11 +452,8 @@ private:
     // A 1 x 1 data texture of value 1, so that a constant coverage goes through the cutout path.
     int constantTexture() {
         if (constant_ < 0) {
-            Texture t;
+            Texture t = Texture::fromFloats(1, 1, 1, {1.0f}, false);
             t.path = path_ + " (constant coverage)";
-            t.colour = false;
-            t.width = t.height = t.channels = 1;
-            t.texels = {1.0f};
             constant_ = scene_.textures->add(std::move(t));
         }
         return constant_;

@@ -24,12 +24,6 @@ double sceneBoundingRadius(const Scene& scene) {
     return r > 0.0 ? r : 1.0;
 }
 
-double meanTexel(const Texture& t) {
-    double sum = 0.0;
-    for (float v : t.texels) sum += v;
-    return t.texels.empty() ? 1.0 : sum / double(t.texels.size());
-}
-
 } // namespace
 
 // KHR_lights_punctual's falloffs: the spot's, smooth from the inner to the outer cone, and the
@@ -90,7 +84,7 @@ LightSet::LightSet(const Scene& scene, LightChoice choice) : scene_(scene) {
             emitters_.push_back(e);
             // Both sides emit; a textured emitter by its texture's mean (a guess at this triangle's share).
             double& mean = emissionMean[scene.triMaterial[t]];
-            if (mean < 0.0) mean = m.emissionMap.used() ? meanTexel((*scene.textures)[m.emissionMap.texture]) : 1.0;
+            if (mean < 0.0) mean = m.emissionMap.used() ? (*scene.textures)[m.emissionMap.texture].mean : 1.0;
             power.push_back(2.0 * kPi * double(area) * double(average(m.emission)) * mean);
         }
     }

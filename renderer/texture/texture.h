@@ -1,8 +1,9 @@
 // Textures as the scene holds them, and how a material uses one. Lookups go through
-// texture/texture_cache.h (OpenImageIO's TextureSystem: mip-mapped, filtered, tile-cached).
+// texture/texture_cache.h (filtered over a mip pyramid by texture/texture_sampler.h).
 #pragma once
 
 #include "core/math.h"
+#include "texture/texel_format.h"
 
 #include <cmath>
 #include <cstdint>
@@ -11,20 +12,41 @@
 
 namespace pt {
 
-// Linear float texels as read from a file, row 0 at the top of the image (v = 1 in texture space).
-// A colour texture is decoded from sRGB where the file is 8- or 16-bit and always has 3 channels
-// (grey replicated, alpha dropped); a data texture keeps the file's values and its first 1 to 4
-// channels (an alpha channel last).
+// One level of a texture's mip pyramid: its size, and where its texels start in Texture::data.
+struct MipLevel {
+    int width = 0, height = 0;
+    size_t offset = 0;
+};
+
+// A texture as the scene holds it: texels at the file's own depth (texture/texel_format.h), row 0
+// at the top of the image (v = 1 in texture space), then its mip levels, each half the size of the
+// one before (TextureCache::add builds them). A colour texture has 3 channels (grey replicated,
+// alpha dropped) and is sRGB-encoded where the file is 8-bit; a data texture keeps the file's
+// values and its first 1 to 4 channels (an alpha channel last).
 struct Texture {
     std::string path;
     bool colour = true;
     int width = 0, height = 0, channels = 0;
-    std::vector<float> texels;
-    float peak = 0.0f; // largest |texel|, set by TextureCache::add: what a map can multiply its factor by
+    TexelFormat format = TexelFormat::Float;
+    std::vector<uint8_t> data;     // every level's texels, interleaved channels
+    std::vector<MipLevel> levels;  // level 0 is the image as read
+    float peak = 0.0f;  // largest |texel|, set by TextureCache::add: what a map can multiply its factor by
+    double mean = 1.0;  // mean of all texels and channels (emission's light-tree power), set by add
     uint64_t sourceHash = 0; // of the file's bytes it was decoded from (readTexture)
 
+    // Float texels given row by row (tests, constant maps).
+    static Texture fromFloats(int width, int height, int channels, const std::vector<float>& values, bool colour = true);
+
     bool hasAlpha() const { return channels == 2 || channels == 4; }
-    double bytes() const { return double(texels.size()) * sizeof(float); }
+    double bytes() const { return double(data.size()); }
+    int bytesPerTexel() const { return channels * bytesPerChannel(format); }
+    const uint8_t* texelAt(const MipLevel& level, int x, int y) const {
+        return data.data() + level.offset + (size_t(y) * size_t(level.width) + size_t(x)) * size_t(bytesPerTexel());
+    }
+    // Channel c of texel (x, y) in `level`, as linear float.
+    float texel(int x, int y, int c, int level = 0) const {
+        return loadTexel(format, texelAt(levels[size_t(level)], x, y) + c * bytesPerChannel(format));
+    }
 };
 
 // How a lookup outside [0, 1] finds its texels, along one axis: glTF's sampler wrapS and wrapT

@@ -1,26 +1,29 @@
-// Texture lookups through OpenImageIO's TextureSystem: mip levels built on first use, anisotropic
-// filtering over a footprint, tiles cached. The texels come from memory (Texture), not from the
-// files again: colour maps are decoded from sRGB before filtering, so minification averages
-// light, not encoded values (a black-and-white checker far away is 0.5, not 0.21).
+// A scene's textures and the lookups a material makes in them: through the map's wrap and
+// transform, filtered over the ray cone's footprint (texture/texture_sampler.h). Colour maps are
+// decoded from sRGB before filtering, so minification averages light, not encoded values (a
+// black-and-white checker far away is 0.5, not 0.21).
 #pragma once
 
 #include "texture/texture.h"
 
 #include <deque>
-#include <memory>
 #include <string>
 
 namespace pt {
 
 class TextureCache {
 public:
-    TextureCache();
-    ~TextureCache();
+    // Taps along a footprint's major axis, at most: a footprint stretched further takes its level
+    // from the major axis divided by this (blurred along the minor one).
+    static constexpr int kMaxTaps = 8;
+
+    TextureCache() = default;
     TextureCache(const TextureCache&) = delete;
     TextureCache& operator=(const TextureCache&) = delete;
 
-    // Takes a texture read by readTexture and returns its index. Not thread-safe; scenes add
-    // their textures while loading, before any lookup.
+    // Takes a texture read by readTexture (or made by Texture::fromFloats), builds its mip
+    // pyramid and returns its index. Not thread-safe; scenes add their textures while loading,
+    // before any lookup.
     int add(Texture&& texture);
     // Index of the texture read from `path` as colour or data, or -1.
     int find(const std::string& path, bool colour) const;
@@ -38,13 +41,9 @@ public:
     Vec3 vector(const TextureMap& map, Vec2 uv, const Footprint& footprint) const;
 
 private:
-    void lookup(const TextureMap& map, Vec2 uv, const Footprint& footprint, int first, int count, float* out,
-                float* dds = nullptr, float* ddt = nullptr) const;
     float pick(const TextureMap& map, const float* rgba, int count) const;
 
-    std::deque<Texture> textures_; // a deque: registered texels must not move
-    struct Impl;
-    std::unique_ptr<Impl> impl_;
+    std::deque<Texture> textures_; // a deque: a Texture& handed out stays valid as others are added
 };
 
 } // namespace pt

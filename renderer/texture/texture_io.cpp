@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 namespace pt {
@@ -34,49 +35,71 @@ bool decodeTexture(OIIO::ImageInput& imageInput, const std::string& path, bool c
     // Colour: RGB (grey read as one channel, then replicated). Data: up to four channels as stored.
     int stored = colour ? 3 : std::min(nc, 4);
     int read = colour ? (nc >= 3 ? 3 : 1) : stored;
-    double bytes = double(w) * double(h) * sizeof(float) * (stored + (read < stored ? read : 0));
+    // Stored at the file's depth: 8 bits as 8 bits, half as half, anything else as float.
+    OIIO::TypeDesc::BASETYPE base = OIIO::TypeDesc::BASETYPE(spec.format.basetype);
+    TexelFormat format = base == OIIO::TypeDesc::UINT8 ? (colour ? TexelFormat::Srgb8 : TexelFormat::Unorm8)
+                         : base == OIIO::TypeDesc::HALF ? TexelFormat::Half
+                                                        : TexelFormat::Float;
+    bool isLinear = base == OIIO::TypeDesc::FLOAT || base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::DOUBLE;
+    int bpc = bytesPerChannel(format);
+    // The pyramid adds a third; a grey colour map is read once more before it is replicated.
+    double texels = double(w) * double(h);
+    double bytes = texels * bpc * (stored * 4.0 / 3.0 + (read < stored ? read : 0));
     if (bytes > budgetBytes) {
         tooLarge = true;
-        char what[160];
-        std::snprintf(what, sizeof what, "%dx%d, %.1f GB as float texels, beyond the %.1f GB left for textures "
-                      "(a quarter of this machine's memory)", w, h, bytes / 1e9, std::max(0.0, budgetBytes) / 1e9);
+        char what[200];
+        std::snprintf(what, sizeof what, "%dx%d, %.1f GB as %d-byte texels with their mip levels, beyond the %.1f GB "
+                      "left for textures (a quarter of this machine's memory)", w, h, bytes / 1e9, stored * bpc,
+                      std::max(0.0, budgetBytes) / 1e9);
         error = "texture \"" + path + "\" is too large: " + what;
         return false;
     }
+    const OIIO::TypeDesc type = format == TexelFormat::Float ? OIIO::TypeDesc::FLOAT
+                                : format == TexelFormat::Half ? OIIO::TypeDesc::HALF
+                                                              : OIIO::TypeDesc::UINT8;
+    const size_t texelBytes = size_t(stored) * size_t(bpc);
     try {
-        texture.texels.assign(size_t(w) * h * stored, 0.0f);
-        std::vector<float> grey(read < stored ? size_t(w) * h : 0);
-        float* target = grey.empty() ? texture.texels.data() : grey.data();
-        if (!in->read_image(0, 0, 0, read, OIIO::TypeDesc::FLOAT, target)) {
+        texture.data.assign(size_t(w) * size_t(h) * texelBytes, 0);
+        std::vector<uint8_t> grey(read < stored ? size_t(w) * size_t(h) * size_t(bpc) : 0);
+        uint8_t* target = grey.empty() ? texture.data.data() : grey.data();
+        if (!in->read_image(0, 0, 0, read, type, target)) {
             error = "cannot read texture \"" + path + "\": " + in->geterror();
-            texture.texels.clear();
+            texture.data.clear();
             return false;
         }
-        for (size_t i = 0; i < grey.size(); ++i)
-            for (int c = 0; c < 3; ++c) texture.texels[3 * i + c] = grey[i];
+        for (size_t i = 0; i < size_t(w) * size_t(h) && !grey.empty(); ++i)
+            for (int c = 0; c < 3; ++c) std::memcpy(&texture.data[i * texelBytes + size_t(c * bpc)], &grey[i * size_t(bpc)], size_t(bpc));
     } catch (const std::bad_alloc&) {
         tooLarge = true;
         error = "texture \"" + path + "\": out of memory for its " + std::to_string(w) + "x" + std::to_string(h) + " texels";
-        texture.texels.clear();
+        texture.data.clear();
         return false;
     }
-    bool isLinear = spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF ||
-                    spec.format.basetype == OIIO::TypeDesc::DOUBLE;
     texture.path = path;
     texture.colour = colour;
     texture.width = w;
     texture.height = h;
     texture.channels = stored;
-    for (size_t i = 0; i < texture.texels.size(); ++i) {
-        float& v = texture.texels[i];
-        if (colour && !isLinear) v = srgbToLinear(v);
+    texture.format = format;
+    texture.levels = {MipLevel{w, h, 0}};
+    if (bpc == 1) return true; // every byte is a finite, non-negative value
+    // 16-bit and wider integer colour files are sRGB-encoded; float values must be finite (and,
+    // as colour, not negative), checked in order so that the first bad texel is named.
+    const size_t count = size_t(w) * size_t(h) * size_t(stored);
+    for (size_t i = 0; i < count; ++i) {
+        uint8_t* at = texture.data.data() + i * size_t(bpc);
+        float v = loadTexel(format, at);
+        if (colour && !isLinear) {
+            v = srgbToLinear(v);
+            storeTexel(format, v, at);
+        }
         if (std::isfinite(v) && (v >= 0.0f || !colour)) continue; // data may be signed
         size_t pixel = i / size_t(stored);
         char what[200];
         std::snprintf(what, sizeof what, "texel (%zu, %zu) channel %zu is %g; %s", pixel % size_t(w), pixel / size_t(w),
                       i % size_t(stored), double(v), colour ? "a colour must be finite and not negative" : "values must be finite");
         error = "texture \"" + path + "\": " + what;
-        texture.texels.clear();
+        texture.data.clear();
         return false;
     }
     return true;
