@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 namespace pt {
 
+namespace {
+
+// Level sizes below `width` x `height`, level 0 included.
 std::vector<MipLevel> mipLevelsOf(int width, int height, int bytesPerTexel) {
     std::vector<MipLevel> levels;
     size_t offset = 0;
@@ -19,8 +21,6 @@ std::vector<MipLevel> mipLevelsOf(int width, int height, int bytesPerTexel) {
     }
     return levels;
 }
-
-namespace {
 
 // The fine texels each coarse texel covers along one axis, with the share of each: coarse texel i
 // spans [i, i + 1) * fine / coarse fine texels (two of weight 1/2 where fine is even).
@@ -66,19 +66,23 @@ void filterLevel(Texture& t, const MipLevel& from, const MipLevel& to, Fine&& fi
 float peakOf(const Texture& t) {
     const size_t count = size_t(t.width) * size_t(t.height) * size_t(t.channels);
     const uint8_t* data = t.data.data();
-    const int bpc = bytesPerChannel(t.format);
-    return tbb::parallel_reduce(
-        tbb::blocked_range<size_t>(0, count, 1 << 16), 0.0f,
-        [&](const tbb::blocked_range<size_t>& r, float m) {
-            if (bpc == 1) {
-                uint8_t top = 0;
-                for (size_t i = r.begin(); i != r.end(); ++i) top = std::max(top, data[i]);
-                return std::max(m, loadTexel(t.format, &top));
-            }
-            for (size_t i = r.begin(); i != r.end(); ++i) m = std::max(m, std::abs(loadTexel(t.format, data + i * size_t(bpc))));
-            return m;
-        },
-        [](float a, float b) { return std::max(a, b); }); // max is exact in any order
+    return withTexelFormat(t.format, [&](auto format) {
+        constexpr TexelFormat f = decltype(format)::value;
+        constexpr size_t bpc = size_t(bytesPerChannel(f));
+        return tbb::parallel_reduce(
+            tbb::blocked_range<size_t>(0, count, 1 << 16), 0.0f,
+            [&](const tbb::blocked_range<size_t>& r, float m) {
+                if constexpr (bpc == 1) {
+                    uint8_t top = 0;
+                    for (size_t i = r.begin(); i != r.end(); ++i) top = std::max(top, data[i]);
+                    return std::max(m, loadTexel(f, &top));
+                } else {
+                    for (size_t i = r.begin(); i != r.end(); ++i) m = std::max(m, std::abs(loadTexel(f, data + i * bpc)));
+                    return m;
+                }
+            },
+            [](float a, float b) { return std::max(a, b); }); // max is exact in any order
+    });
 }
 
 // Mean of float texels, summed row by row in parallel and the rows in order: the same bits on any thread count.
@@ -108,22 +112,16 @@ void buildMipPyramid(Texture& t) {
     std::vector<float> fine, coarse;
     const uint8_t* base = t.data.data();
     const size_t stride = size_t(t.width) * size_t(nc); // channels per row of level 0
-    // Level 0 read with its format known at compile time (no switch per channel).
-    auto fromBase = [&](auto format) {
-        constexpr TexelFormat f = decltype(format)::value;
-        constexpr size_t bpc = size_t(bytesPerChannel(f));
-        filterLevel(t, levels[0], levels[1], [&](int x, int y, int c) {
-            return loadTexel(f, base + (size_t(y) * stride + size_t(x) * size_t(nc) + size_t(c)) * bpc);
-        }, coarse);
-    };
     for (size_t l = 1; l < levels.size(); ++l) {
         const MipLevel& from = levels[l - 1];
-        if (l == 1) switch (t.format) {
-            case TexelFormat::Srgb8: fromBase(std::integral_constant<TexelFormat, TexelFormat::Srgb8>()); break;
-            case TexelFormat::Unorm8: fromBase(std::integral_constant<TexelFormat, TexelFormat::Unorm8>()); break;
-            case TexelFormat::Half: fromBase(std::integral_constant<TexelFormat, TexelFormat::Half>()); break;
-            case TexelFormat::Float: fromBase(std::integral_constant<TexelFormat, TexelFormat::Float>()); break;
-            }
+        if (l == 1)
+            withTexelFormat(t.format, [&](auto format) {
+                constexpr TexelFormat f = decltype(format)::value;
+                constexpr size_t bpc = size_t(bytesPerChannel(f));
+                filterLevel(t, levels[0], levels[1], [&](int x, int y, int c) {
+                    return loadTexel(f, base + (size_t(y) * stride + size_t(x) * size_t(nc) + size_t(c)) * bpc);
+                }, coarse);
+            });
         else
             filterLevel(t, from, levels[l], [&](int x, int y, int c) {
                 return fine[(size_t(y) * size_t(from.width) + size_t(x)) * size_t(nc) + size_t(c)];

@@ -8,9 +8,6 @@
 
 namespace pt {
 
-// Level sizes below `width` x `height`, level 0 included.
-std::vector<MipLevel> mipLevelsOf(int width, int height, int bytesPerTexel);
-
 // Appends levels 1 and up to a texture that holds level 0 only. Rows of a level are filtered in
 // parallel on the TBB pool; each texel is a fixed sum, so the result is the same for any thread count.
 // Sets the texture's peak (largest |value| of level 0) and mean (over all texels and channels) too.

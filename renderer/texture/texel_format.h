@@ -5,13 +5,14 @@
 
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 namespace pt {
 
 enum class TexelFormat : uint8_t {
     Srgb8,  // 8-bit colour, sRGB-encoded
     Unorm8, // 8-bit data, value / 255
-    Half,   // 16-bit float (half EXR; 16-bit integer files, decoded to linear first)
+    Half,   // 16-bit float (half EXR); 16-bit integer files are held as Float
     Float,  // 32-bit float
 };
 
@@ -57,6 +58,18 @@ inline float loadTexel(TexelFormat f, const uint8_t* p) {
         std::memcpy(&v, p, 4);
         return v;
     }
+    }
+}
+
+// Calls f with `format` as a compile-time constant (a std::integral_constant): loops over texels
+// then take the format's branch once, not once per channel.
+template <typename F>
+decltype(auto) withTexelFormat(TexelFormat format, F&& f) {
+    switch (format) {
+    case TexelFormat::Srgb8: return f(std::integral_constant<TexelFormat, TexelFormat::Srgb8>());
+    case TexelFormat::Unorm8: return f(std::integral_constant<TexelFormat, TexelFormat::Unorm8>());
+    case TexelFormat::Half: return f(std::integral_constant<TexelFormat, TexelFormat::Half>());
+    default: return f(std::integral_constant<TexelFormat, TexelFormat::Float>());
     }
 }
 

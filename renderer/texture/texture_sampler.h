@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 namespace pt {
 
@@ -64,12 +63,10 @@ inline void addBilinear(const Texture& tex, int level, float s, float t, Texture
     }
 }
 
-// sampleTexture, for one texel format; Repeating: both axes repeat (most maps), the wraps'
-// branches folded away.
-template <TexelFormat Format, int Count, bool Repeating>
+// sampleTexture, for one texel format.
+template <TexelFormat Format, int Count>
 inline void sampleTextureAs(const Texture& tex, TextureWrap wrapS, TextureWrap wrapT, Vec2 st, Vec2 dx, Vec2 dy, int first,
                             int maxTaps, float* out, float* ds, float* dt) {
-    if (Repeating) wrapS = wrapT = TextureWrap::Repeat;
     for (int c = 0; c < Count; ++c) {
         out[c] = 0.0f;
         if (ds) ds[c] = dt[c] = 0.0f;
@@ -108,18 +105,9 @@ template <int Count>
 inline void sampleTexture(const Texture& tex, TextureWrap wrapS, TextureWrap wrapT, Vec2 st, Vec2 dx, Vec2 dy, int first,
                           int maxTaps, float* out, float* ds = nullptr, float* dt = nullptr) {
     static_assert(Count == 1 || Count == 3);
-    const bool repeating = wrapS == TextureWrap::Repeat && wrapT == TextureWrap::Repeat;
-    auto as = [&](auto format) {
-        constexpr TexelFormat f = decltype(format)::value;
-        if (repeating) sampleTextureAs<f, Count, true>(tex, wrapS, wrapT, st, dx, dy, first, maxTaps, out, ds, dt);
-        else sampleTextureAs<f, Count, false>(tex, wrapS, wrapT, st, dx, dy, first, maxTaps, out, ds, dt);
-    };
-    switch (tex.format) {
-    case TexelFormat::Srgb8: return as(std::integral_constant<TexelFormat, TexelFormat::Srgb8>());
-    case TexelFormat::Unorm8: return as(std::integral_constant<TexelFormat, TexelFormat::Unorm8>());
-    case TexelFormat::Half: return as(std::integral_constant<TexelFormat, TexelFormat::Half>());
-    case TexelFormat::Float: return as(std::integral_constant<TexelFormat, TexelFormat::Float>());
-    }
+    withTexelFormat(tex.format, [&](auto format) {
+        sampleTextureAs<decltype(format)::value, Count>(tex, wrapS, wrapT, st, dx, dy, first, maxTaps, out, ds, dt);
+    });
 }
 
 } // namespace pt
