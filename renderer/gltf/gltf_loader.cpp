@@ -736,7 +736,7 @@ Scene loadGltfFromMemory(const std::string& path, const std::vector<unsigned cha
     loader.SetImageLoader(keepImageBytes, &images);
     std::string base = std::filesystem::path(path).parent_path().string();
     if (base.empty()) base = ".";
-    ExternalFiles files{base, lengths, uint64_t(0.5 * physicalMemoryBytes())};
+    ExternalFiles files{base, lengths, uint64_t(0.5 * physicalMemoryBytes()), {}};
     loader.SetFsCallbacks(tinygltf::FsCallbacks{externalFileExists, pathAsGiven, readExternalFile, writeNothing, &files});
     std::string err, warn;
     bool ok = false;
