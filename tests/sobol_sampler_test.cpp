@@ -13,14 +13,9 @@ namespace {
 TEST(SobolSampler, PowerOfTwoPrefixesAreNets) {
     const int m = 6, n = 1 << m;
     for (uint32_t pixel : {0u, 7u, 123456u})
-        for (int pair = 0; pair < 8; ++pair) {
+        for (uint32_t pair = 0; pair < SobolSampler::kSobolDimensions; ++pair) {
             std::vector<Vec2> points;
-            SobolSampler s;
-            for (int i = 0; i < n; ++i) {
-                s.startPixelSample(pixel, uint32_t(i), 3);
-                for (int skip = 0; skip < pair; ++skip) s.get2D();
-                points.push_back(s.get2D());
-            }
+            for (int i = 0; i < n; ++i) points.push_back(SobolSampler(pixel, uint32_t(i), 3).get2D(uint32_t(pair)));
             for (int i = 0; i <= m; ++i) {
                 int j = m - i;
                 std::set<std::pair<int, int>> cells;
@@ -37,31 +32,18 @@ TEST(SobolSampler, PowerOfTwoPrefixesAreNets) {
 
 TEST(SobolSampler, OneDimensionalPrefixesAreStratified) {
     const int n = 32;
-    SobolSampler s;
     std::set<int> strata;
-    for (int i = 0; i < n; ++i) {
-        s.startPixelSample(42, uint32_t(i), 0);
-        s.get2D(); // the pixel position
-        strata.insert(int(s.get1D() * n));
-    }
+    for (int i = 0; i < n; ++i) strata.insert(int(SobolSampler(42, uint32_t(i), 0).get1D(sampleDimension(0, SampleUse::LightChoice)) * n));
     EXPECT_EQ(strata.size(), size_t(n));
 }
 
 // Pixels and seeds get independent scrambles: the same sample index differs between them.
 TEST(SobolSampler, PixelsAndSeedsAreDecorrelated) {
-    SobolSampler a, b;
-    a.startPixelSample(1, 0, 0);
-    b.startPixelSample(2, 0, 0);
-    EXPECT_NE(a.get2D(), b.get2D());
-    a.startPixelSample(1, 0, 0);
-    b.startPixelSample(1, 0, 1);
-    EXPECT_NE(a.get2D(), b.get2D());
+    EXPECT_NE(SobolSampler(1, 0, 0).get2D(kPixelDimension), SobolSampler(2, 0, 0).get2D(kPixelDimension));
+    EXPECT_NE(SobolSampler(1, 0, 0).get2D(kPixelDimension), SobolSampler(1, 0, 1).get2D(kPixelDimension));
     // Mean over many pixels of one sample index is uniform (no shared offset).
     double sum = 0;
-    for (uint32_t p = 0; p < 20000; ++p) {
-        a.startPixelSample(p, 5, 0);
-        sum += a.get1D();
-    }
+    for (uint32_t p = 0; p < 20000; ++p) sum += SobolSampler(p, 5, 0).get1D(1);
     EXPECT_NEAR(sum / 20000, 0.5, 0.01);
 }
 
@@ -88,36 +70,55 @@ TEST(SobolSampler, SecondDimensionTablesMatchDefinition) {
 namespace pt {
 namespace {
 
-// Beyond the Sobol dimensions values come from an independent stream of the same (pixel,
-// sample, seed): reached by drawing or by skipping, it never depends on what the sampler did
-// for an earlier path (which would make the image depend on the thread that ran it).
-TEST(SobolSampler, DeepDimensionsDependOnPixelSampleAndSeedOnly) {
-    const uint32_t deep = SobolSampler::kSobolDimensions + 3;
-    SobolSampler fresh;
-    fresh.startPixelSample(17, 5, 2);
-    fresh.skip(deep);
-    float expected = fresh.get1D();
-
-    SobolSampler used;
-    used.startPixelSample(3, 9, 2);
-    for (int i = 0; i < 40; ++i) used.get2D(); // another path, deep into its stream
-    used.startPixelSample(17, 5, 2);
-    used.skip(deep);
-    EXPECT_EQ(used.get1D(), expected);
-
-    // Uniform and uncorrelated across samples of a pixel.
-    double sum = 0, sumProduct = 0;
-    const int n = 20000;
+// Pearson's chi-square of n points in a k x k grid of [0, 1)^2 against the uniform density.
+template <typename Point>
+double chiSquareUniform(int n, int k, Point&& point) {
+    std::vector<int> bins(size_t(k * k), 0);
     for (int i = 0; i < n; ++i) {
-        SobolSampler s;
-        s.startPixelSample(4, uint32_t(i), 0);
-        s.skip(deep);
-        Vec2 v = s.get2D();
-        sum += v.x;
-        sumProduct += (v.x - 0.5) * (v.y - 0.5);
+        Vec2 p = point(i);
+        EXPECT_TRUE(p.x >= 0.0f && p.x < 1.0f && p.y >= 0.0f && p.y < 1.0f);
+        ++bins[size_t(std::min(k - 1, int(p.y * float(k))) * k + std::min(k - 1, int(p.x * float(k))))];
     }
-    EXPECT_NEAR(sum / n, 0.5, 0.01);
-    EXPECT_NEAR(sumProduct / n, 0.0, 0.005);
+    const double expected = double(n) / double(k * k);
+    double chi2 = 0.0;
+    for (int b : bins) chi2 += (b - expected) * (b - expected) / expected;
+    return chi2;
+}
+
+// Every dimension, Sobol or hashed, is uniform over the samples of a pixel, and two dimensions of
+// one path are independent: chi-square over 16 x 16 cells (255 degrees of freedom; 370 is five
+// standard deviations above the mean) for a 2D draw, two 1D draws of neighbouring dimensions
+// (the last Sobol one against the first hashed one, and two hashed ones), and the same decision
+// at two depths. The independent sampler is held to the same.
+TEST(SobolSampler, DimensionsAreUniformAndIndependent) {
+    const int n = 64000, k = 16;
+    const uint32_t lastSobol = SobolSampler::kSobolDimensions - 1;
+    const uint32_t deepDirection = sampleDimension(4, SampleUse::Direction);
+    const uint32_t pairs[][2] = {{lastSobol, lastSobol + 1}, {lastSobol + 1, lastSobol + 2},
+                                 {sampleDimension(1, SampleUse::Lobe), sampleDimension(3, SampleUse::Lobe)}};
+    for (uint32_t pixel : {3u, 99999u}) {
+        EXPECT_LT(chiSquareUniform(n, k, [&](int i) { return SobolSampler(pixel, uint32_t(i), 5).get2D(deepDirection); }), 370.0);
+        EXPECT_LT(chiSquareUniform(n, k, [&](int i) { return IndependentSampler(pixel, uint32_t(i), 5).get2D(deepDirection); }), 370.0);
+        for (auto [a, b] : pairs) {
+            EXPECT_LT(chiSquareUniform(n, k, [&](int i) {
+                          SobolSampler s(pixel, uint32_t(i), 5);
+                          return Vec2(s.get1D(a), s.get1D(b));
+                      }), 370.0) << a << " " << b;
+            EXPECT_LT(chiSquareUniform(n, k, [&](int i) {
+                          IndependentSampler s(pixel, uint32_t(i), 5);
+                          return Vec2(s.get1D(a), s.get1D(b));
+                      }), 370.0) << a << " " << b;
+        }
+    }
+}
+
+// A path's dimensions are laid out by vertex and purpose: no two decisions share one, and the
+// camera's is apart from all.
+TEST(SobolSampler, EachDecisionHasItsOwnDimension) {
+    std::set<uint32_t> seen{kPixelDimension};
+    for (int depth = 0; depth < 64; ++depth)
+        for (SampleUse use : {SampleUse::LightChoice, SampleUse::LightPoint, SampleUse::Lobe, SampleUse::Direction, SampleUse::Roulette})
+            EXPECT_TRUE(seen.insert(sampleDimension(depth, use)).second) << depth << " " << uint32_t(use);
 }
 
 } // namespace

@@ -119,18 +119,13 @@ TEST(Distribution1D, AllZeroFallsBackToUniform) {
     EXPECT_EQ(d.sample(0.75f, &pmf), 1u);
 }
 
-TEST(Sampler, StreamsDependOnPixelSampleAndSeedOnly) {
-    IndependentSampler a, b;
-    a.startPixelSample(10, 3, 0);
-    float x = a.get1D();
-    b.startPixelSample(10, 3, 0);
-    EXPECT_EQ(x, b.get1D());
-    b.startPixelSample(11, 3, 0);
-    EXPECT_NE(x, b.get1D());
-    b.startPixelSample(10, 4, 0);
-    EXPECT_NE(x, b.get1D());
-    b.startPixelSample(10, 3, 1);
-    EXPECT_NE(x, b.get1D());
+TEST(Sampler, ValuesDependOnPixelSampleSeedAndDimensionOnly) {
+    const float x = IndependentSampler(10, 3, 0).get1D(7);
+    EXPECT_EQ(x, IndependentSampler(10, 3, 0).get1D(7));
+    EXPECT_NE(x, IndependentSampler(11, 3, 0).get1D(7));
+    EXPECT_NE(x, IndependentSampler(10, 4, 0).get1D(7));
+    EXPECT_NE(x, IndependentSampler(10, 3, 1).get1D(7));
+    EXPECT_NE(x, IndependentSampler(10, 3, 0).get1D(8));
 }
 
 } // namespace

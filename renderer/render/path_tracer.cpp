@@ -20,7 +20,7 @@ constexpr int kRouletteDepth = 3; // scattering events before Russian roulette s
 } // namespace
 
 template <typename Sampler>
-Spectrum PathTracer::trace(const Ray& cameraRay, const Hit& cameraHit, Sampler& sampler, RayCounts& counts,
+Spectrum PathTracer::trace(const Ray& cameraRay, const Hit& cameraHit, const Sampler& sampler, RayCounts& counts,
                            FirstHit* first) const {
     const bool sampleLights = settings_.lightSampling != LightSampling::Bsdf && !lights_.empty();
     const bool weighHits = settings_.lightSampling == LightSampling::Mis;
@@ -85,12 +85,9 @@ Spectrum PathTracer::trace(const Ray& cameraRay, const Hit& cameraHit, Sampler& 
         }
         if (bsdf.isBlack()) break;
 
-        // Next-event estimation: one emitter, one point on it, one shadow ray. Dimensions a vertex
-        // does not use are skipped, not drawn, so each depth always reads the same dimensions.
-        float uLight = 0.0f;
-        if (lights_.size() > 1) uLight = sampler.get1D();
-        else sampler.skip(1);
-        Vec2 uLightPoint = sampler.get2D();
+        // Next-event estimation: one emitter, one point on it, one shadow ray.
+        const float uLight = lights_.size() > 1 ? sampler.get1D(sampleDimension(depth, SampleUse::LightChoice)) : 0.0f;
+        const Vec2 uLightPoint = sampler.get2D(sampleDimension(depth, SampleUse::LightPoint));
         if (sampleLights && bsdf.hasNonDelta()) {
             float pmf;
             uint32_t e = lights_.choose(uLight, sp.p, frame.n, pmf);
@@ -125,8 +122,8 @@ Spectrum PathTracer::trace(const Ray& cameraRay, const Hit& cameraHit, Sampler& 
         }
 
         // Sample the BSDF to continue the path.
-        float uLobe = sampler.get1D();
-        Vec2 uDir = sampler.get2D();
+        const float uLobe = sampler.get1D(sampleDimension(depth, SampleUse::Lobe));
+        const Vec2 uDir = sampler.get2D(sampleDimension(depth, SampleUse::Direction));
         BsdfSample bs;
         if (!bsdf.sample(woLocal, uLobe, uDir, bs)) break;
         Vec3 wi = frame.toWorld(bs.wi);
@@ -142,10 +139,8 @@ Spectrum PathTracer::trace(const Ray& cameraRay, const Hit& cameraHit, Sampler& 
         // glass are not cut for carrying radiance that is only compressed.
         if (depth + 1 >= kRouletteDepth) {
             float q = std::min(1.0f, maxComponent(beta / etaScale));
-            if (sampler.get1D() >= q) break;
+            if (sampler.get1D(sampleDimension(depth, SampleUse::Roulette)) >= q) break;
             beta /= q;
-        } else {
-            sampler.skip(1);
         }
         if (isBlack(beta)) break;
         ray = spawnRay(sp, wi);
@@ -166,7 +161,7 @@ Spectrum PathTracer::trace(const Ray& cameraRay, const Hit& cameraHit, Sampler& 
     return L;
 }
 
-template Spectrum PathTracer::trace(const Ray&, const Hit&, IndependentSampler&, RayCounts&, FirstHit*) const;
-template Spectrum PathTracer::trace(const Ray&, const Hit&, SobolSampler&, RayCounts&, FirstHit*) const;
+template Spectrum PathTracer::trace(const Ray&, const Hit&, const IndependentSampler&, RayCounts&, FirstHit*) const;
+template Spectrum PathTracer::trace(const Ray&, const Hit&, const SobolSampler&, RayCounts&, FirstHit*) const;
 
 } // namespace pt

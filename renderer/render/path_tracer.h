@@ -34,7 +34,7 @@ public:
     // (camera rays go to Embree in packets). Sampler is IndependentSampler or SobolSampler; the
     // choice is made once per render, not per ray.
     template <typename Sampler>
-    Spectrum trace(const Ray& cameraRay, const Hit& cameraHit, Sampler& sampler, RayCounts& counts,
+    Spectrum trace(const Ray& cameraRay, const Hit& cameraHit, const Sampler& sampler, RayCounts& counts,
                    FirstHit* first = nullptr) const;
 
 private:

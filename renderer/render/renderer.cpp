@@ -95,8 +95,8 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
                             for (int i = 0; i < lanes; ++i) {
                                 if (s < begin[i]) continue;
                                 active[i] = true;
-                                samplers[i].startPixelSample(uint32_t(y) * uint32_t(width_) + uint32_t(gx + i), s, settings_.seed);
-                                Vec2 jitter = samplers[i].get2D(); // box filter: uniform inside the pixel
+                                samplers[i] = Sampler(uint32_t(y) * uint32_t(width_) + uint32_t(gx + i), s, settings_.seed);
+                                Vec2 jitter = samplers[i].get2D(kPixelDimension); // box filter: uniform inside the pixel
                                 rays[i] = camera_.generate(float(gx + i) + jitter.x, float(y) + jitter.y);
                             }
                             Hit hits[kPacket];

@@ -1,5 +1,7 @@
-// The per-path source of sample values. Each (pixel, sample index, seed) starts its own stream;
-// dimensions are consumed in a fixed order by the path loop.
+// Sample values as pure functions of (pixel, sample index, seed, dimension): no stream, no
+// counter, so any decision of any path can be drawn in any order (a staged loop draws a batch's
+// light choices together, then their directions) and the image never depends on the thread or
+// tile order. Which dimension a decision reads is fixed by the vertex and its purpose.
 #pragma once
 
 #include "core/math.h"
@@ -7,22 +9,31 @@
 
 namespace pt {
 
+// What a path vertex draws a sample for. Every vertex owns all five dimensions, used or not, so a
+// dimension keeps its meaning whatever the path did before.
+enum class SampleUse : uint32_t { LightChoice, LightPoint, Lobe, Direction, Roulette };
+constexpr uint32_t kPixelDimension = 0; // the camera ray's position inside its pixel
+constexpr uint32_t kDimensionsPerVertex = 5;
+
+// The dimension a vertex at `depth` (scattering events before it) reads for `use`.
+constexpr uint32_t sampleDimension(int depth, SampleUse use) {
+    return 1 + kDimensionsPerVertex * uint32_t(depth) + uint32_t(use);
+}
+
+// Two 24-bit uniform floats in [0, 1) from a 64-bit hash (its top and middle bits).
+inline Vec2 unitPairOf(uint64_t h) { return Vec2(float(h >> 40) * 0x1p-24f, float((h >> 16) & 0xffffffu) * 0x1p-24f); }
+
+// Independent uniform values: each dimension a hash of the pixel's key and the dimension.
 class IndependentSampler {
 public:
-    void startPixelSample(uint32_t pixelIndex, uint32_t sampleIndex, uint64_t seed) {
-        uint64_t key = hashCombine(hashCombine(seed, pixelIndex), sampleIndex);
-        rng_.seedWith(key, mixBits(key ^ 0x2545f4914f6cdd1dULL));
-    }
-    float get1D() { return rng_.nextFloat(); }
-    Vec2 get2D() {
-        float a = rng_.nextFloat();
-        return Vec2(a, rng_.nextFloat());
-    }
-    // Independent streams have no dimensions to keep aligned: nothing to skip.
-    void skip(uint32_t) {}
+    IndependentSampler() = default;
+    IndependentSampler(uint32_t pixelIndex, uint32_t sampleIndex, uint64_t seed)
+        : key_(hashCombine(hashCombine(seed, pixelIndex), sampleIndex)) {}
+    float get1D(uint32_t dimension) const { return unitPairOf(hashCombine(key_, dimension)).x; }
+    Vec2 get2D(uint32_t dimension) const { return unitPairOf(hashCombine(key_, dimension)); }
 
 private:
-    Pcg32 rng_;
+    uint64_t key_ = 0;
 };
 
 } // namespace pt

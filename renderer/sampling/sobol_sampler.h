@@ -1,12 +1,13 @@
 // Owen-scrambled Sobol points, shuffled per dimension pair (Burley 2020, "Practical Hash-based
-// Owen Scrambling"). Each get2D() call is a new dimension pair: the first two Sobol dimensions,
-// with the sample index shuffled and both coordinates scrambled by hashes of (pixel, seed, pair).
+// Owen Scrambling"). Each sample dimension (sampler.h) is a pair of the first two Sobol
+// dimensions, with the sample index shuffled and both coordinates scrambled by hashes of
+// (pixel, seed, dimension).
 // Every pixel gets its own randomization, so the estimate stays unbiased, and a power-of-two
 // prefix of samples is stratified in each pair: the cheapest variance reduction there is.
 #pragma once
 
 #include "core/math.h"
-#include "sampling/rng.h"
+#include "sampling/sampler.h"
 
 #include <array>
 
@@ -83,66 +84,49 @@ inline uint32_t mix32(uint32_t x) {
 
 } // namespace sobol
 
+// Owen-scrambled Sobol values for the first kSobolDimensions dimensions, independent hashed
+// values beyond: every value a pure function of (pixel, sample index, seed, dimension).
 class SobolSampler {
 public:
-    // Stratification pays on the first bounces; deeper dimensions come from an independent
-    // stream, which costs a tenth as much per value.
-    // Dimensions count calls (get1D or get2D, a pair is one) and skips: the camera's pair, then
-    // five per vertex (light choice, point on the light, lobe, direction, roulette). 12 covers
-    // the camera, two whole vertices and the third vertex's light choice.
+    // Stratification pays on the first bounces; deeper dimensions are hashed, which costs a
+    // fraction as much per value. 12 covers the camera, two whole vertices and the third
+    // vertex's light choice (sampleDimension).
     static constexpr uint32_t kSobolDimensions = 12;
 
-    void startPixelSample(uint32_t pixelIndex, uint32_t sampleIndex, uint64_t seed) {
-        pixelSeed_ = uint32_t(hashCombine(seed ^ 0x5bd1e995ULL, pixelIndex));
-        sampleIndex_ = sampleIndex;
-        reversedIndex_ = sobol::reverseBits(sampleIndex); // the shuffle works on the reversed index
-        dimension_ = 0;
-        tailStarted_ = false;
-    }
-    float get1D() {
-        if (dimension_ >= kSobolDimensions) return tail().nextFloat();
-        uint32_t s = nextSeed();
-        uint32_t i = shuffledIndex(s);
+    SobolSampler() = default;
+    SobolSampler(uint32_t pixelIndex, uint32_t sampleIndex, uint64_t seed)
+        : pixelSeed_(uint32_t(hashCombine(seed ^ 0x5bd1e995ULL, pixelIndex))), sampleIndex_(sampleIndex),
+          reversedIndex_(sobol::reverseBits(sampleIndex)) {} // the shuffle works on the reversed index
+
+    float get1D(uint32_t dimension) const {
+        if (dimension >= kSobolDimensions) return deep(dimension).x;
+        uint32_t s = seedOf(dimension);
         // van der Corput is reverseBits(i): its reversed form is i itself.
-        return sobol::toUnitFloat(sobol::scrambleReversed(i, s ^ 0xa511e9b3u));
+        return sobol::toUnitFloat(sobol::scrambleReversed(shuffledIndex(s), s ^ 0xa511e9b3u));
     }
-    Vec2 get2D() {
-        if (dimension_ >= kSobolDimensions) {
-            float a = tail().nextFloat();
-            return Vec2(a, rng_.nextFloat());
-        }
-        uint32_t s = nextSeed();
+    Vec2 get2D(uint32_t dimension) const {
+        if (dimension >= kSobolDimensions) return deep(dimension);
+        uint32_t s = seedOf(dimension);
         uint32_t i = shuffledIndex(s);
         uint32_t x = sobol::scrambleReversed(i, s ^ 0xa511e9b3u);
         uint32_t y = sobol::scrambleReversed(sobol::dimension1Reversed(i), s ^ 0x63d83595u);
         return Vec2(sobol::toUnitFloat(x), sobol::toUnitFloat(y));
     }
-    // Advances past dimensions a path does not need here, so later dimensions keep their meaning.
-    void skip(uint32_t dimensions) { dimension_ += dimensions; }
 
 private:
-    // One hash per dimension pair: the Laine-Karras permutations that use it mix it further.
-    uint32_t nextSeed() { return sobol::mix32(pixelSeed_ + 0x9e3779b9u * ++dimension_); }
+    // One hash per dimension (a 2D draw is one dimension of pairs): the Laine-Karras
+    // permutations that use it mix it further.
+    uint32_t seedOf(uint32_t dimension) const { return sobol::mix32(pixelSeed_ + 0x9e3779b9u * (dimension + 1)); }
     uint32_t shuffledIndex(uint32_t seed) const {
         return sobol::reverseBits(sobol::laineKarrasPermutation(reversedIndex_, seed));
     }
-    // The independent stream of this (pixel, sample, seed), started when first needed.
-    Pcg32& tail() {
-        ++dimension_;
-        if (!tailStarted_) {
-            uint64_t key = hashCombine(pixelSeed_, sampleIndex_);
-            rng_.seedWith(key, mixBits(key ^ 0x2545f4914f6cdd1dULL));
-            tailStarted_ = true;
-        }
-        return rng_;
+    Vec2 deep(uint32_t dimension) const {
+        return unitPairOf(hashCombine((uint64_t(pixelSeed_) << 32) | sampleIndex_, dimension));
     }
 
     uint32_t pixelSeed_ = 0;
     uint32_t sampleIndex_ = 0;
     uint32_t reversedIndex_ = 0;
-    bool tailStarted_ = false;
-    Pcg32 rng_;
-    uint32_t dimension_ = 0;
 };
 
 } // namespace pt
