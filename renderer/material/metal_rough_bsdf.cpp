@@ -13,14 +13,14 @@ inline float schlickWeight(float cosTheta) {
 
 } // namespace
 
-MetalRoughBsdf MetalRoughBsdf::make(const Spectrum& baseColor, float metallic, float alpha, float ior, float cosThetaO,
-                                    const Spectrum& specularColor, float specularWeight) {
+MetalRoughBsdf MetalRoughBsdf::make(const MetalRoughParameters& p, float cosThetaO) {
     MetalRoughBsdf b;
+    const Spectrum& baseColor = p.baseColor;
     b.baseColor = baseColor;
-    b.metallic = std::clamp(metallic, 0.0f, 1.0f);
-    b.alpha = alpha > kSmoothAlpha ? alpha : 0.0f;
-    b.f0 = glm::min(sqr((ior - 1.0f) / (ior + 1.0f)) * specularColor, Spectrum(1.0f));
-    b.specular = std::clamp(specularWeight, 0.0f, 1.0f);
+    b.metallic = std::clamp(p.metallic, 0.0f, 1.0f);
+    b.alpha = p.alpha > kSmoothAlpha ? p.alpha : 0.0f;
+    b.f0 = glm::min(sqr((p.ior - 1.0f) / (p.ior + 1.0f)) * p.specularColor, Spectrum(1.0f));
+    b.specular = std::clamp(p.specular, 0.0f, 1.0f);
     // Lobe weights at wo, with Fresnel at the normal: the sampling estimate of each lobe's share.
     float w = schlickWeight(cosThetaO);
     Spectrum fd = b.f0 + (Spectrum(1.0f) - b.f0) * w;

@@ -23,6 +23,16 @@
 
 namespace pt {
 
+// The BRDF's parameters at one hit, after textures (evaluate_material.h).
+struct MetalRoughParameters {
+    Spectrum baseColor{1.0f};
+    float metallic = 0.0f;
+    float alpha = 0.0f;                // GGX alpha = roughness^2
+    float ior = 1.5f;
+    Spectrum specularColor{1.0f};      // KHR_materials_specular
+    float specular = 1.0f;
+};
+
 struct MetalRoughBsdf {
     Spectrum baseColor{1.0f};
     float metallic = 0.0f;
@@ -31,8 +41,12 @@ struct MetalRoughBsdf {
     float specular = 1.0f; // s, the dielectric's specular weight
     float pSpecular = 0.0f, pDiffuse = 0.0f;
 
+    // The BRDF for outgoing direction cosThetaO = wo.z.
+    static MetalRoughBsdf make(const MetalRoughParameters& p, float cosThetaO);
     static MetalRoughBsdf make(const Spectrum& baseColor, float metallic, float alpha, float ior, float cosThetaO,
-                               const Spectrum& specularColor = Spectrum(1.0f), float specular = 1.0f);
+                               const Spectrum& specularColor = Spectrum(1.0f), float specular = 1.0f) {
+        return make(MetalRoughParameters{baseColor, metallic, alpha, ior, specularColor, specular}, cosThetaO);
+    }
 
     bool smooth() const { return alpha <= 0.0f; }
     bool hasNonDelta() const { return pDiffuse > 0.0f || (!smooth() && pSpecular > 0.0f); }

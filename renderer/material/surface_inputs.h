@@ -1,0 +1,76 @@
+// Step 1 of evaluating a material at a hit (evaluate_material.h): the texture fetch. Every map a
+// material has is read here, and nothing else reads one, so the model steps after it work on
+// plain values: a batch of hits can fetch together, then shade together.
+#pragma once
+
+#include "render/surface_point.h"
+#include "scene/scene.h"
+#include "texture/texture_cache.h"
+
+namespace pt {
+
+// What a material's maps give at one hit, before any model's rules. A value whose map the
+// material does not have keeps its default: the model step (lab_bsdf.h, metal_rough_bsdf.h)
+// reads the material's own factor there.
+struct SurfaceInputs {
+    Vec3 normal{0.0f, 0.0f, 1.0f}; // shading normal after the normal or bump map, on the geometric side of wo
+    Spectrum kd{1.0f};              // map_Kd / baseColorTexture times vertex colours
+    Spectrum ks{1.0f};              // map_Ks
+    float roughness = 1.0f;         // map_Pr / metallicRoughness G, in [0, 1] (perceptual: alpha = value^2)
+    float metallic = 1.0f;          // map_Pm / metallicRoughness B, in [0, 1]
+};
+
+// Radiance a material emits at texture coordinates uv: Ke, times its emission texture (glTF).
+inline Spectrum emittedRadiance(const Material& m, const TextureCache& textures, Vec2 uv, const Footprint& footprint) {
+    if (!m.emissionMap.used()) return m.emission;
+    return m.emission * textures.color(m.emissionMap, uv, footprint);
+}
+
+// The shading normal after a normal map (tangent space, y along increasing v) or a bump map
+// (the surface displaced along n by -bm * height).
+inline Vec3 perturbedNormal(const Material& m, const TextureCache& textures, const SurfacePoint& sp) {
+    const Vec3 n = sp.ns;
+    Vec3 mapped(0.0f);
+    if (m.normalMap.used()) {
+        Vec3 c = 2.0f * textures.vector(m.normalMap, sp.uv, sp.footprint) - Vec3(1.0f);
+        Vec3 t = sp.tangent;
+        if (t == Vec3(0.0f)) t = safeNormalize(sp.dpdu - n * glm::dot(n, sp.dpdu));
+        if (t == Vec3(0.0f)) t = Frame(n).s; // no uv direction at all: the map's x and y are arbitrary
+        Vec3 b = sp.bitangentSign * glm::cross(n, t);
+        Vec2 xy = m.normalMap.bumpScale * normalMapToUv(m.normalMap, Vec2(c.x, c.y));
+        mapped = xy.x * t + xy.y * b + c.z * n;
+    } else if (m.bumpMap.used()) {
+        if (sp.dpdu == Vec3(0.0f) || sp.dpdv == Vec3(0.0f)) return n;
+        Vec2 dh;
+        textures.scalar(m.bumpMap, sp.uv, sp.footprint, dh);
+        dh *= m.bumpMap.bumpScale;
+        Vec3 dpdu = sp.dpdu - n * (glm::dot(n, sp.dpdu) - dh.x);
+        Vec3 dpdv = sp.dpdv - n * (glm::dot(n, sp.dpdv) - dh.y);
+        mapped = glm::cross(dpdu, dpdv);
+        if (glm::dot(mapped, n) < 0.0f) mapped = -mapped;
+    } else {
+        return n;
+    }
+    mapped = safeNormalize(mapped);
+    return mapped == Vec3(0.0f) || !isFinite(mapped) ? n : mapped;
+}
+
+// Reads every map of `m` at the hit. `wo` points back along the arriving ray. Textured materials
+// need `sp`'s texture coordinates (addTextureCoordinates).
+inline SurfaceInputs fetchSurfaceInputs(const Material& m, const TextureCache& textures, const SurfacePoint& sp,
+                                        const Vec3& wo) {
+    SurfaceInputs in;
+    in.normal = m.perturbsNormal() ? perturbedNormal(m, textures, sp) : sp.ns;
+    // Where interpolated or mapped normals put the viewer behind the surface that the geometry
+    // shows (silhouettes of smooth meshes, steep bumps), trust the geometry.
+    if (glm::dot(wo, in.normal) * glm::dot(wo, sp.ng) <= 0.0f) in.normal = sp.ng;
+    if (!m.isTextured()) return in;
+    if (m.kdMap.used()) in.kd = textures.color(m.kdMap, sp.uv, sp.footprint);
+    if (m.vertexColors) in.kd *= sp.color;
+    if (m.ksMap.used()) in.ks = textures.color(m.ksMap, sp.uv, sp.footprint);
+    if (m.roughnessMap.used()) in.roughness = std::clamp(textures.scalar(m.roughnessMap, sp.uv, sp.footprint), 0.0f, 1.0f);
+    if (m.metallicMap.used()) in.metallic = std::clamp(textures.scalar(m.metallicMap, sp.uv, sp.footprint), 0.0f, 1.0f);
+    return in;
+}
+
+} // namespace pt
