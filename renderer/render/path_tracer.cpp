@@ -1,7 +1,7 @@
 #include "render/path_tracer.h"
 
-#include "render/surface_point.h"
 #include "material/evaluate_material.h"
+#include "render/surface_point.h"
 
 namespace pt {
 namespace {
@@ -20,148 +20,164 @@ constexpr int kRouletteDepth = 3; // scattering events before Russian roulette s
 } // namespace
 
 template <typename Sampler>
-Spectrum PathTracer::trace(const Ray& cameraRay, const Hit& cameraHit, const Sampler& sampler, RayCounts& counts,
-                           FirstHit* first) const {
+float PathTracer::hitWeight(const PathState<Sampler>& path, uint32_t emitter, float distance) const {
     const bool sampleLights = settings_.lightSampling != LightSampling::Bsdf && !lights_.empty();
-    const bool weighHits = settings_.lightSampling == LightSampling::Mis;
-
-    Spectrum L(0.0f), beta(1.0f);
-    Ray ray = cameraRay;
-    float etaScale = 1.0f;     // product of radiance scalings at refractions, undone for roulette
-    bool deltaBefore = true;   // camera or delta lobe before this hit: emitters seen count fully
-    float prevPdf = 0.0f;      // BSDF pdf of the direction that led here (non-delta)
-    Vec3 prevP(0.0f);          // where that direction started
-    Vec3 prevN(0.0f);          // and the shading normal there (the light tree weighs emitters by it)
-    // Ray cone for texture footprints: width at the ray's origin. It keeps the camera's spread
-    // after a bounce rather than the lobe's: filtering a texture over a rough lobe's footprint
-    // blurs it against the light that varies across it, a bias the crosscheck measured (+0.3 %).
-    float coneWidth = 0.0f;
-    ++counts.camera;
-
-    // Weight of emission found by BSDF sampling (or by the camera) at this hit.
-    auto hitWeight = [&](uint32_t emitter, float distance) {
-        if (deltaBefore || !sampleLights || emitter == ~0u) return 1.0f;
-        if (!weighHits) return 0.0f; // next-event estimation already counted it
-        float lightPdf = lights_.pmf(emitter, prevP, prevN) * lights_.pdf(emitter, prevP, ray.dir, distance);
-        return powerHeuristic(prevPdf, lightPdf);
-    };
-
-    for (int depth = 0;; ++depth) { // depth = scattering events so far
-        Hit hit = depth == 0 ? cameraHit : accel_.intersect(ray);
-        if (!hit.found()) {
-            const Environment& env = scene_.environment;
-            L += beta * env.radiance(ray.dir) * hitWeight(lights_.environmentEmitter(), kInf);
-            if (env.sun && env.sun->covers(ray.dir)) L += beta * env.sun->radiance * hitWeight(lights_.sunEmitter(), kInf);
-            break;
-        }
-        if (hit.onSphere) { // sphere lights emit and reflect nothing
-            if (depth == 0 && first) {
-                const SphereLight& l = scene_.lights[hit.prim];
-                first->depth = hit.t;
-                first->normal = glm::normalize(ray.origin + hit.t * ray.dir - l.center);
-            }
-            uint32_t e = lights_.emitterOfLight(hit.prim);
-            L += beta * lights_.emitter(e).radiance * hitWeight(e, hit.t);
-            break;
-        }
-
-        const ShadingTriangle& tri = triangles_[hit.prim];
-        SurfacePoint sp = makeSurfacePoint(tri, hit);
-        const Material& m = scene_.materials[sp.material];
-        coneWidth += pixelSpread_ * hit.t;
-        if (m.isTextured()) addTextureCoordinates(sp, tri, scene_, tangents_, hit, ray.dir, coneWidth);
-        if (m.isEmissive())
-            L += beta * emittedRadiance(m, *scene_.textures, sp.uv, sp.footprint) *
-                 hitWeight(lights_.emitterOfTriangle(hit.prim), hit.t);
-        if (depth == settings_.maxDepth) break;
-        ShadingPoint shading = evaluateMaterial(m, *scene_.textures, sp, -ray.dir, settings_.hemisphere);
-        const Frame& frame = shading.frame;
-        const Vec3 woLocal = shading.wo;
-        const Bsdf& bsdf = shading.bsdf;
-        if (depth == 0 && first) {
-            first->albedo = bsdf.albedo();
-            first->normal = woLocal.z >= 0.0f ? frame.n : -frame.n;
-            first->depth = hit.t;
-        }
-        if (bsdf.isBlack()) break;
-
-        // Next-event estimation: one emitter, one point on it, one shadow ray.
-        const float uLight = lights_.size() > 1 ? sampler.get1D(sampleDimension(depth, SampleUse::LightChoice)) : 0.0f;
-        const Vec2 uLightPoint = sampler.get2D(sampleDimension(depth, SampleUse::LightPoint));
-        if (sampleLights && bsdf.hasNonDelta()) {
-            float pmf;
-            uint32_t e = lights_.choose(uLight, sp.p, frame.n, pmf);
-            LightSample ls = pmf > 0.0f ? lights_.sample(e, sp.p, uLightPoint) : LightSample{};
-            Vec3 wiLocal = frame.toLocal(ls.wi);
-            // The shading and the geometric normal must agree on the side wi leaves from, or the
-            // shadow ray would start on the wrong side of the surface.
-            if (ls.pdf > 0.0f && glm::dot(ls.wi, sp.ng) * wiLocal.z > 0.0f) {
-                float bsdfPdf; // for MIS; evaluated with f in one pass rather than again below
-                Spectrum f = bsdf.evalPdf(woLocal, wiLocal, bsdfPdf);
-                if (!isBlack(f) && !isBlack(ls.radiance)) {
-                    ++counts.shadow;
-                    bool blocked;
-                    const Emitter& em = lights_.emitter(e);
-                    if (em.kind == Emitter::Kind::Triangle) {
-                        Vec3 from = offsetRayOrigin(sp.p, sp.pError, sp.ng, ls.wi);
-                        Vec3 to = offsetRayOrigin(ls.point, ls.pointError, ls.normal, -ls.wi);
-                        Vec3 d = to - from;
-                        float len = glm::length(d);
-                        blocked = !(len > 0.0f) || accel_.occluded(Ray{from, d / len}, len);
-                    } else {
-                        int skip = em.kind == Emitter::Kind::Sphere ? int(em.index) : -1;
-                        blocked = accel_.occluded(spawnRay(sp, ls.wi), ls.distance, skip);
-                    }
-                    if (!blocked) {
-                        float w = (ls.delta || !weighHits) ? 1.0f
-                                                           : powerHeuristic(pmf * ls.pdf, bsdfPdf);
-                        L += beta * f * ls.radiance * (w / (pmf * ls.pdf));
-                    }
-                }
-            }
-        }
-
-        // Sample the BSDF to continue the path.
-        const float uLobe = sampler.get1D(sampleDimension(depth, SampleUse::Lobe));
-        const Vec2 uDir = sampler.get2D(sampleDimension(depth, SampleUse::Direction));
-        BsdfSample bs;
-        if (!bsdf.sample(woLocal, uLobe, uDir, bs)) break;
-        Vec3 wi = frame.toWorld(bs.wi);
-        if ((glm::dot(wi, sp.ng) > 0.0f) != (bs.wi.z > 0.0f)) break; // see the shadow-ray note
-        beta *= bs.weight;
-        etaScale *= bs.radianceScale;
-        deltaBefore = bs.delta;
-        prevPdf = bs.pdf;
-        prevP = sp.p;
-        prevN = frame.n;
-
-        // Russian roulette on the throughput without the refraction scaling, so paths inside
-        // glass are not cut for carrying radiance that is only compressed.
-        if (depth + 1 >= kRouletteDepth) {
-            float q = std::min(1.0f, maxComponent(beta / etaScale));
-            if (sampler.get1D(sampleDimension(depth, SampleUse::Roulette)) >= q) break;
-            beta /= q;
-        }
-        if (isBlack(beta)) break;
-        ray = spawnRay(sp, wi);
-        ++counts.continuation;
-    }
-
-    if (!isFinite(L) || L.x < 0.0f || L.y < 0.0f || L.z < 0.0f) {
-        ++counts.discarded;
-        return Spectrum(0.0f);
-    }
-    if (settings_.clamp > 0.0f) {
-        float peak = maxComponent(L);
-        if (peak > settings_.clamp) {
-            L *= settings_.clamp / peak;
-            ++counts.clamped;
-        }
-    }
-    return L;
+    if (path.deltaBefore || !sampleLights || emitter == ~0u) return 1.0f;
+    if (settings_.lightSampling != LightSampling::Mis) return 0.0f; // next-event estimation already counted it
+    float lightPdf = lights_.pmf(emitter, path.prevP, path.prevN) * lights_.pdf(emitter, path.prevP, path.ray.dir, distance);
+    return powerHeuristic(path.prevPdf, lightPdf);
 }
 
-template Spectrum PathTracer::trace(const Ray&, const Hit&, const IndependentSampler&, RayCounts&, FirstHit*) const;
-template Spectrum PathTracer::trace(const Ray&, const Hit&, const SobolSampler&, RayCounts&, FirstHit*) const;
+template <typename Sampler>
+bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, uint32_t slot, bool firstHits,
+                       std::vector<ShadowQuery>& shadows, RayCounts& counts) const {
+    const int depth = path.depth;
+    const Ray& ray = path.ray;
+    if (!hit.found()) {
+        const Environment& env = scene_.environment;
+        path.L += path.beta * env.radiance(ray.dir) * hitWeight(path, lights_.environmentEmitter(), kInf);
+        if (env.sun && env.sun->covers(ray.dir)) path.L += path.beta * env.sun->radiance * hitWeight(path, lights_.sunEmitter(), kInf);
+        return false;
+    }
+    if (hit.onSphere) { // sphere lights emit and reflect nothing
+        if (depth == 0 && firstHits) {
+            const SphereLight& l = scene_.lights[hit.prim];
+            path.first.depth = hit.t;
+            path.first.normal = glm::normalize(ray.origin + hit.t * ray.dir - l.center);
+        }
+        uint32_t e = lights_.emitterOfLight(hit.prim);
+        path.L += path.beta * lights_.emitter(e).radiance * hitWeight(path, e, hit.t);
+        return false;
+    }
+
+    const ShadingTriangle& tri = triangles_[hit.prim];
+    SurfacePoint sp = makeSurfacePoint(tri, hit);
+    const Material& m = scene_.materials[sp.material];
+    path.coneWidth += pixelSpread_ * hit.t;
+    if (m.isTextured()) addTextureCoordinates(sp, tri, scene_, tangents_, hit, ray.dir, path.coneWidth);
+    if (m.isEmissive())
+        path.L += path.beta * emittedRadiance(m, *scene_.textures, sp.uv, sp.footprint) *
+                  hitWeight(path, lights_.emitterOfTriangle(hit.prim), hit.t);
+    if (depth == settings_.maxDepth) return false;
+    const ShadingPoint shading = evaluateMaterial(m, *scene_.textures, sp, -ray.dir, settings_.hemisphere);
+    const Frame& frame = shading.frame;
+    const Vec3 woLocal = shading.wo;
+    const Bsdf& bsdf = shading.bsdf;
+    if (depth == 0 && firstHits) {
+        path.first.albedo = bsdf.albedo();
+        path.first.normal = woLocal.z >= 0.0f ? frame.n : -frame.n;
+        path.first.depth = hit.t;
+    }
+    if (bsdf.isBlack()) return false;
+
+    // Next-event estimation: one emitter, one point on it; the shadow ray goes to the shadow
+    // stage with what it adds if nothing blocks it.
+    const Sampler& sampler = path.sampler;
+    const float uLight = lights_.size() > 1 ? sampler.get1D(sampleDimension(depth, SampleUse::LightChoice)) : 0.0f;
+    const Vec2 uLightPoint = sampler.get2D(sampleDimension(depth, SampleUse::LightPoint));
+    if (settings_.lightSampling != LightSampling::Bsdf && !lights_.empty() && bsdf.hasNonDelta()) {
+        float pmf;
+        uint32_t e = lights_.choose(uLight, sp.p, frame.n, pmf);
+        LightSample ls = pmf > 0.0f ? lights_.sample(e, sp.p, uLightPoint) : LightSample{};
+        Vec3 wiLocal = frame.toLocal(ls.wi);
+        // The shading and the geometric normal must agree on the side wi leaves from, or the
+        // shadow ray would start on the wrong side of the surface.
+        if (ls.pdf > 0.0f && glm::dot(ls.wi, sp.ng) * wiLocal.z > 0.0f) {
+            float bsdfPdf; // for MIS; evaluated with f in one pass
+            Spectrum f = bsdf.evalPdf(woLocal, wiLocal, bsdfPdf);
+            if (!isBlack(f) && !isBlack(ls.radiance)) {
+                ++counts.shadow;
+                float w = (ls.delta || settings_.lightSampling != LightSampling::Mis) ? 1.0f
+                                                                                      : powerHeuristic(pmf * ls.pdf, bsdfPdf);
+                ShadowQuery q{Ray{}, 0.0f, -1, slot, path.beta * f * ls.radiance * (w / (pmf * ls.pdf))};
+                const Emitter& em = lights_.emitter(e);
+                bool aimed = true;
+                if (em.kind == Emitter::Kind::Triangle) {
+                    // Between the two surfaces' offset points, so that neither self-intersects.
+                    Vec3 from = offsetRayOrigin(sp.p, sp.pError, sp.ng, ls.wi);
+                    Vec3 to = offsetRayOrigin(ls.point, ls.pointError, ls.normal, -ls.wi);
+                    Vec3 d = to - from;
+                    float len = glm::length(d);
+                    aimed = len > 0.0f;
+                    q.ray = Ray{from, d / len};
+                    q.distance = len;
+                } else {
+                    q.ray = spawnRay(sp, ls.wi);
+                    q.distance = ls.distance;
+                    if (em.kind == Emitter::Kind::Sphere) q.skipLight = int(em.index);
+                }
+                if (aimed) shadows.push_back(q);
+            }
+        }
+    }
+
+    // Sample the BSDF to continue the path.
+    BsdfSample bs;
+    if (!bsdf.sample(woLocal, sampler.get1D(sampleDimension(depth, SampleUse::Lobe)),
+                     sampler.get2D(sampleDimension(depth, SampleUse::Direction)), bs))
+        return false;
+    Vec3 wi = frame.toWorld(bs.wi);
+    if ((glm::dot(wi, sp.ng) > 0.0f) != (bs.wi.z > 0.0f)) return false; // see the shadow-ray note
+    path.beta *= bs.weight;
+    path.etaScale *= bs.radianceScale;
+    path.deltaBefore = bs.delta;
+    path.prevPdf = bs.pdf;
+    path.prevP = sp.p;
+    path.prevN = frame.n;
+
+    // Russian roulette on the throughput without the refraction scaling, so paths inside glass
+    // are not cut for carrying radiance that is only compressed.
+    if (depth + 1 >= kRouletteDepth) {
+        float q = std::min(1.0f, maxComponent(path.beta / path.etaScale));
+        if (sampler.get1D(sampleDimension(depth, SampleUse::Roulette)) >= q) return false;
+        path.beta /= q;
+    }
+    if (isBlack(path.beta)) return false;
+    path.ray = spawnRay(sp, wi);
+    path.depth = depth + 1;
+    ++counts.continuation;
+    return true;
+}
+
+template <typename Sampler>
+void PathTracer::trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& counts) const {
+    auto& paths = batch.paths;
+    auto& hits = batch.hits;
+    auto& active = batch.active;
+    auto& shadows = batch.shadows;
+    const uint32_t n = uint32_t(paths.size());
+    counts.camera += n;
+    active.resize(n);
+    for (uint32_t i = 0; i < n; ++i) active[i] = i;
+    while (!active.empty()) {
+        // Shade: each path's hit, keeping those that go on.
+        shadows.clear();
+        size_t going = 0;
+        for (uint32_t i : active)
+            if (shade(paths[i], hits[i], i, firstHits, shadows, counts)) active[going++] = i;
+        active.resize(going);
+        // Shadow: a light sample's contribution counts where nothing blocks its ray. Added before
+        // the path's next hit is shaded, as one path alone would.
+        for (const ShadowQuery& q : shadows)
+            if (!accel_.occluded(q.ray, q.distance, q.skipLight)) paths[q.path].L += q.contribution;
+        // Intersect: the continuing paths' next rays.
+        for (uint32_t i : active) hits[i] = accel_.intersect(paths[i].ray);
+    }
+    for (PathState<Sampler>& p : paths) {
+        if (!isFinite(p.L) || p.L.x < 0.0f || p.L.y < 0.0f || p.L.z < 0.0f) {
+            ++counts.discarded;
+            p.L = Spectrum(0.0f);
+        } else if (settings_.clamp > 0.0f) {
+            float peak = maxComponent(p.L);
+            if (peak > settings_.clamp) {
+                p.L *= settings_.clamp / peak;
+                ++counts.clamped;
+            }
+        }
+    }
+}
+
+template void PathTracer::trace(PathBatch<IndependentSampler>&, bool, RayCounts&) const;
+template void PathTracer::trace(PathBatch<SobolSampler>&, bool, RayCounts&) const;
 
 } // namespace pt

@@ -1,10 +1,16 @@
-// The per-sample path loop: next-event estimation, BSDF sampling and multiple importance
-// sampling (power heuristic) between them, Russian roulette. Orchestration (tiles, threads,
-// film) lives in render/renderer.h.
+// The path loop: next-event estimation, BSDF sampling and multiple importance sampling (power
+// heuristic) between them, Russian roulette; run in stages over a batch of paths: shade every
+// path's hit (emission, material, a light sample whose shadow ray is queued, the next direction),
+// trace the queued shadow rays, intersect the continuing paths' rays, again until none is left.
+// Each stage is a loop over flat arrays with one kind of work, so that it can run several paths
+// per instruction; each path's arithmetic is the same as one path traced alone, in the same order,
+// so the image does not depend on how paths are batched. Orchestration (tiles, threads, film,
+// camera rays) lives in render/renderer.h.
 #pragma once
 
 #include "accel/accel.h"
 #include "light/light_set.h"
+#include "render/path_state.h"
 #include "render/render_settings.h"
 #include "render/shading_triangles.h"
 #include "render/vertex_tangents.h"
@@ -12,13 +18,23 @@
 #include "sampling/sobol_sampler.h"
 #include "scene/scene.h"
 
+#include <vector>
+
 namespace pt {
 
-// What the camera ray hit first, for the albedo, normal and depth layers.
-struct FirstHit {
-    Spectrum albedo{0.0f}; // the BSDF's total reflectance towards the camera (all lobes)
-    Vec3 normal{0.0f};     // shading normal, turned to face the camera
-    float depth = kInf;    // distance along the camera ray
+// The paths of one batch and the arrays the stages share, kept by a thread from batch to batch
+// so that the loop allocates nothing once they have grown.
+template <typename Sampler>
+struct PathBatch {
+    std::vector<PathState<Sampler>> paths;
+    std::vector<Hit> hits;            // each path's closest hit along its ray
+    std::vector<uint32_t> active;     // slots of paths still going
+    std::vector<ShadowQuery> shadows; // this round's shadow rays
+
+    void clear() {
+        paths.clear();
+        hits.clear();
+    }
 };
 
 class PathTracer {
@@ -30,14 +46,23 @@ public:
         : scene_(scene), triangles_(triangles), tangents_(tangents), accel_(accel), lights_(lights),
           settings_(settings), pixelSpread_(pixelSpread) {}
 
-    // Radiance arriving at the camera along `cameraRay`, whose closest hit the caller traced
-    // (camera rays go to Embree in packets). Sampler is IndependentSampler or SobolSampler; the
-    // choice is made once per render, not per ray.
+    // Traces every path of `batch` to its end. Each path's camera ray and its closest hit are set
+    // by the caller (camera rays go to Embree in packets); on return each path's L is its
+    // radiance sample (0 for a discarded NaN, negative or infinite one; clamped if asked), and
+    // `first` is filled when `firstHits` is set. Sampler is IndependentSampler or SobolSampler:
+    // the choice is made once per render, not per ray.
     template <typename Sampler>
-    Spectrum trace(const Ray& cameraRay, const Hit& cameraHit, const Sampler& sampler, RayCounts& counts,
-                   FirstHit* first = nullptr) const;
+    void trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& counts) const;
 
 private:
+    // Shade stage for one path at its hit: returns whether it goes on (its ray set to the next).
+    template <typename Sampler>
+    bool shade(PathState<Sampler>& path, const Hit& hit, uint32_t slot, bool firstHits,
+               std::vector<ShadowQuery>& shadows, RayCounts& counts) const;
+    // Weight of emission found by BSDF sampling (or by the camera) at a hit `distance` along the path's ray.
+    template <typename Sampler>
+    float hitWeight(const PathState<Sampler>& path, uint32_t emitter, float distance) const;
+
     const Scene& scene_;
     const std::vector<ShadingTriangle>& triangles_;
     const std::vector<CornerTangent>& tangents_;

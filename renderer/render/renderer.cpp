@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include <tbb/combinable.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #include <xmmintrin.h>
@@ -19,6 +20,10 @@ float pixelSpread(const Camera& camera, int height, uint32_t spp) {
     float pixel = 2.0f * std::tan(glm::radians(0.5f * camera.fovY)) / float(height);
     return pixel * std::max(0.125f, 1.0f / std::sqrt(float(std::max(spp, 1u))));
 }
+
+// Paths traced together through the stages of the path loop, at most. A tile's pass goes in
+// batches of this many.
+constexpr size_t kBatchPaths = 512;
 
 // One pixel's sums over the samples of a pass, in double so that long renders do not lose the
 // small values to the large.
@@ -60,6 +65,7 @@ template <typename Sampler>
 RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last, RenderProgress* progress,
                                       const std::vector<uint32_t>* startAt) const {
     tbb::combinable<RayCounts> counts;
+    tbb::enumerable_thread_specific<PathBatch<Sampler>> batches;
     const bool layers = film.hasFirstHitLayers();
     tbb::parallel_for(
         tbb::blocked_range<size_t>(0, tileCount(), 1),
@@ -68,51 +74,66 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
             _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
             _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
             RayCounts& local = counts.local();
-            // A row of a tile goes in groups of kPacket pixels: their camera rays of one sample
-            // index are traced as one packet, then each path goes on alone.
+            PathBatch<Sampler>& batch = batches.local();
             constexpr int kPacket = Accel::kPacket;
-            Sampler samplers[kPacket];
             for (size_t tile = range.begin(); tile != range.end(); ++tile) {
                 if (progress && progress->cancel.load(std::memory_order_relaxed)) return;
-                int x0 = window_.x0 + int(tile % tilesX_) * kTileSize, y0 = window_.y0 + int(tile / tilesX_) * kTileSize;
-                int x1 = std::min(x0 + kTileSize, window_.x1), y1 = std::min(y0 + kTileSize, window_.y1);
+                const int x0 = window_.x0 + int(tile % tilesX_) * kTileSize, y0 = window_.y0 + int(tile / tilesX_) * kTileSize;
+                const int x1 = std::min(x0 + kTileSize, window_.x1), y1 = std::min(y0 + kTileSize, window_.y1);
+                const int tileWidth = x1 - x0;
+                // The sampler keys a pixel by its place in the full image, the film by its place in the window.
+                auto filmPixel = [&](int x, int y) {
+                    return size_t(y - window_.y0) * size_t(window_.width()) + size_t(x - window_.x0);
+                };
+                PixelSums sums[kTileSize * kTileSize];
+                uint32_t begin[kTileSize * kTileSize], tileBegin = last;
                 for (int y = y0; y < y1; ++y)
-                    for (int gx = x0; gx < x1; gx += kPacket) {
-                        const int lanes = std::min(kPacket, x1 - gx);
-                        // The sampler keys a pixel by its place in the full image, the film by its place in the window.
-                        auto filmPixel = [&](int i) {
-                            return size_t(y - window_.y0) * size_t(window_.width()) + size_t(gx + i - window_.x0);
-                        };
-                        PixelSums sums[kPacket];
-                        uint32_t begin[kPacket], groupBegin = last;
-                        for (int i = 0; i < lanes; ++i) {
-                            begin[i] = startAt ? std::max(first, (*startAt)[filmPixel(i)]) : first;
-                            groupBegin = std::min(groupBegin, begin[i]);
-                        }
-                        for (uint32_t s = groupBegin; s < last; ++s) {
+                    for (int x = x0; x < x1; ++x) {
+                        uint32_t& b = begin[(y - y0) * tileWidth + (x - x0)];
+                        b = startAt ? std::max(first, (*startAt)[filmPixel(x, y)]) : first;
+                        tileBegin = std::min(tileBegin, b);
+                    }
+                // Paths go into the batch sample by sample, each sample's pixels row by row in
+                // groups of kPacket, whose camera rays are traced as one packet. Results are summed
+                // in the same order, so each pixel adds its samples in sample order.
+                batch.clear();
+                auto traceBatch = [&] {
+                    tracer_.trace(batch, layers, local);
+                    for (const PathState<Sampler>& p : batch.paths) sums[p.pixel].add(p.L, p.first);
+                    batch.clear();
+                };
+                for (uint32_t s = tileBegin; s < last; ++s)
+                    for (int y = y0; y < y1; ++y)
+                        for (int gx = x0; gx < x1; gx += kPacket) {
+                            const int lanes = std::min(kPacket, x1 - gx);
+                            if (batch.paths.size() + size_t(lanes) > kBatchPaths) traceBatch();
                             Ray rays[kPacket];
                             bool active[kPacket] = {};
+                            bool any = false;
                             for (int i = 0; i < lanes; ++i) {
-                                if (s < begin[i]) continue;
-                                active[i] = true;
-                                samplers[i] = Sampler(uint32_t(y) * uint32_t(width_) + uint32_t(gx + i), s, settings_.seed);
-                                Vec2 jitter = samplers[i].get2D(kPixelDimension); // box filter: uniform inside the pixel
-                                rays[i] = camera_.generate(float(gx + i) + jitter.x, float(y) + jitter.y);
+                                const int k = (y - y0) * tileWidth + (gx + i - x0);
+                                if (s < begin[k]) continue;
+                                active[i] = any = true;
+                                PathState<Sampler>& p = batch.paths.emplace_back();
+                                p.sampler = Sampler(uint32_t(y) * uint32_t(width_) + uint32_t(gx + i), s, settings_.seed);
+                                p.pixel = uint32_t(k);
+                                Vec2 jitter = p.sampler.get2D(kPixelDimension); // box filter: uniform inside the pixel
+                                rays[i] = p.ray = camera_.generate(float(gx + i) + jitter.x, float(y) + jitter.y);
                             }
+                            if (!any) continue;
                             Hit hits[kPacket];
                             accel_.intersectCameraRays(rays, active, lanes, hits);
-                            for (int i = 0; i < lanes; ++i) {
-                                if (!active[i]) continue;
-                                FirstHit hit;
-                                sums[i].add(tracer_.trace(rays[i], hits[i], samplers[i], local, layers ? &hit : nullptr), hit);
-                            }
+                            for (int i = 0; i < lanes; ++i)
+                                if (active[i]) batch.hits.push_back(hits[i]);
                         }
-                        for (int i = 0; i < lanes; ++i) {
-                            if (begin[i] >= last) continue; // a resumed pixel that already has them all
-                            const PixelSums& p = sums[i];
-                            film.add(filmPixel(i), p.sum, p.sumSq, last - begin[i]);
-                            if (layers) film.addFirstHit(filmPixel(i), p.albedo, p.normal, p.depth, p.hits);
-                        }
+                if (!batch.paths.empty()) traceBatch();
+                for (int y = y0; y < y1; ++y)
+                    for (int x = x0; x < x1; ++x) {
+                        const int k = (y - y0) * tileWidth + (x - x0);
+                        if (begin[k] >= last) continue; // a resumed pixel that already has them all
+                        const PixelSums& p = sums[k];
+                        film.add(filmPixel(x, y), p.sum, p.sumSq, last - begin[k]);
+                        if (layers) film.addFirstHit(filmPixel(x, y), p.albedo, p.normal, p.depth, p.hits);
                     }
                 if (progress) progress->done.fetch_add(last - first, std::memory_order_relaxed);
             }

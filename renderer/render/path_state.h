@@ -1,0 +1,47 @@
+// What the staged path loop (path_tracer.h) keeps of each path between its stages, and the shadow
+// rays next-event estimation leaves for the shadow stage. Plain values in flat arrays, one slot
+// per path of a batch, reused from batch to batch.
+#pragma once
+
+#include "accel/accel.h"
+#include "core/color.h"
+
+namespace pt {
+
+// What the camera ray hit first, for the albedo, normal and depth layers.
+struct FirstHit {
+    Spectrum albedo{0.0f}; // the BSDF's total reflectance towards the camera (all lobes)
+    Vec3 normal{0.0f};     // shading normal, turned to face the camera
+    float depth = kInf;    // distance along the camera ray
+};
+
+template <typename Sampler>
+struct PathState {
+    Sampler sampler;          // this path's (pixel, sample index, seed)
+    Ray ray;                  // the ray whose hit the next shade stage reads
+    Spectrum L{0.0f};         // radiance gathered so far
+    Spectrum beta{1.0f};      // throughput
+    Vec3 prevP{0.0f};         // where the ray started (MIS of emitters it hits)
+    Vec3 prevN{0.0f};         // and the shading normal there (the light tree weighs emitters by it)
+    float prevPdf = 0.0f;     // BSDF pdf of the ray's direction (non-delta)
+    float etaScale = 1.0f;    // product of radiance scalings at refractions, undone for roulette
+    // Ray cone for texture footprints: width at the ray's origin. It keeps the camera's spread
+    // after a bounce rather than the lobe's: filtering a texture over a rough lobe's footprint
+    // blurs it against the light that varies across it, a bias the crosscheck measured (+0.3 %).
+    float coneWidth = 0.0f;
+    int depth = 0;            // scattering events so far
+    bool deltaBefore = true;  // camera or delta lobe before this hit: emitters seen count fully
+    uint32_t pixel = 0;       // the caller's index of the pixel the path belongs to
+    FirstHit first;
+};
+
+// A shadow ray of next-event estimation, with what it adds to its path's radiance if unblocked.
+struct ShadowQuery {
+    Ray ray;
+    float distance;
+    int skipLight;           // sphere light the ray is aimed at (Accel::occluded), or -1
+    uint32_t path;           // slot of the path in its batch
+    Spectrum contribution;
+};
+
+} // namespace pt
