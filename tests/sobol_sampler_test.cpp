@@ -1,8 +1,11 @@
+#include "sampling/sobol_lanes.h"
 #include "sampling/sobol_sampler.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <set>
+#include <vector>
 
 namespace pt {
 namespace {
@@ -119,6 +122,44 @@ TEST(SobolSampler, EachDecisionHasItsOwnDimension) {
     for (int depth = 0; depth < 64; ++depth)
         for (SampleUse use : {SampleUse::LightChoice, SampleUse::LightPoint, SampleUse::Lobe, SampleUse::Direction, SampleUse::Roulette})
             EXPECT_TRUE(seen.insert(sampleDimension(depth, use)).second) << depth << " " << uint32_t(use);
+}
+
+// The draw stage's kernels give what one path's sampler gives, bit for bit: the dispatched one
+// (AVX2 where the CPU has it), and the 1- and 4-lane forms of the same source, for every Sobol
+// and some hashed dimensions, 1D and 2D, at counts that leave a partial last block.
+TEST(SobolSampler, DrawManyMatchesOnePathAtATime) {
+    std::printf("drawMany kernel: %s\n", SobolSampler::drawKernel());
+    for (size_t count : {1u, 7u, 8u, 13u, 300u}) {
+        std::vector<uint32_t> seeds(count), indices(count);
+        std::vector<SobolSampler> samplers;
+        for (size_t k = 0; k < count; ++k) {
+            samplers.emplace_back(uint32_t(k * 97 + 5), uint32_t(k * k % 1031), 3);
+            seeds[k] = samplers.back().pixelSeed();
+            indices[k] = samplers.back().sampleIndex();
+        }
+        for (uint32_t d = 0; d < SobolSampler::kSobolDimensions + 4; ++d)
+            for (bool pair : {false, true}) {
+                std::vector<float> x(count), y(count), x1(count), y1(count), x4(count), y4(count);
+                SobolSampler::drawMany(seeds.data(), indices.data(), count, d, x.data(), pair ? y.data() : nullptr);
+                const bool sobol = d < SobolSampler::kSobolDimensions;
+                if (sobol) {
+                    SobolLanes<1>::draw(seeds.data(), indices.data(), count, d, x1.data(), pair ? y1.data() : nullptr);
+                    SobolLanes<4>::draw(seeds.data(), indices.data(), count, d, x4.data(), pair ? y4.data() : nullptr);
+                }
+                for (size_t k = 0; k < count; ++k) {
+                    const Vec2 want = pair ? samplers[k].get2D(d) : Vec2(samplers[k].get1D(d), 0.0f);
+                    ASSERT_EQ(x[k], want.x) << "count " << count << " dimension " << d << " path " << k;
+                    if (pair) ASSERT_EQ(y[k], want.y) << "count " << count << " dimension " << d << " path " << k;
+                    if (!sobol) continue;
+                    ASSERT_EQ(x1[k], want.x) << "1 lane, dimension " << d;
+                    ASSERT_EQ(x4[k], want.x) << "4 lanes, dimension " << d;
+                    if (pair) {
+                        ASSERT_EQ(y1[k], want.y) << "1 lane, dimension " << d;
+                        ASSERT_EQ(y4[k], want.y) << "4 lanes, dimension " << d;
+                    }
+                }
+            }
+    }
 }
 
 } // namespace

@@ -22,6 +22,11 @@ scene=$root/scenes/textured.obj
 common=(-spp 12 --res 48x36 --aov variance,albedo,normal,depth -q)
 run "$pt" render "$scene" "${common[@]}" -o single.exr
 
+# The SIMD kernels (AVX2 where the CPU has it, SSE2 forced by PT_SIMD) and one thread give the
+# same image.
+run env PT_SIMD=sse2 "$pt" render "$scene" "${common[@]}" --threads 1 -o sse2.exr
+exact sse2_one_thread sse2.exr single.exr
+
 run "$pt" render "$scene" "${common[@]}" --samples 0:5 -o r0.exr
 run "$pt" render "$scene" "${common[@]}" --samples 5:12 -o r1.exr
 run "$pt" merge r0.exr r1.exr --aov variance,albedo,normal,depth -q -o ranges.exr

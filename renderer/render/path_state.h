@@ -35,6 +35,16 @@ struct PathState {
     FirstHit first;
 };
 
+// A vertex's sample values, one per decision (sampler.h's SampleUse), drawn for all paths of a
+// round together before they are shaded.
+struct VertexDraws {
+    float lightChoice;
+    Vec2 lightPoint;
+    float lobe;
+    Vec2 direction;
+    float roulette;
+};
+
 // A shadow ray of next-event estimation, with what it adds to its path's radiance if unblocked.
 struct ShadowQuery {
     Ray ray;

@@ -3,6 +3,8 @@
 #include "material/evaluate_material.h"
 #include "render/surface_point.h"
 
+#include <type_traits>
+
 namespace pt {
 namespace {
 
@@ -29,7 +31,7 @@ float PathTracer::hitWeight(const PathState<Sampler>& path, uint32_t emitter, fl
 }
 
 template <typename Sampler>
-bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, uint32_t slot, bool firstHits,
+bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDraws& u, uint32_t slot, bool firstHits,
                        std::vector<ShadowQuery>& shadows, RayCounts& counts) const {
     const int depth = path.depth;
     const Ray& ray = path.ray;
@@ -72,9 +74,8 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, uint32_t slot, 
 
     // Next-event estimation: one emitter, one point on it; the shadow ray goes to the shadow
     // stage with what it adds if nothing blocks it.
-    const Sampler& sampler = path.sampler;
-    const float uLight = lights_.size() > 1 ? sampler.get1D(sampleDimension(depth, SampleUse::LightChoice)) : 0.0f;
-    const Vec2 uLightPoint = sampler.get2D(sampleDimension(depth, SampleUse::LightPoint));
+    const float uLight = lights_.size() > 1 ? u.lightChoice : 0.0f;
+    const Vec2 uLightPoint = u.lightPoint;
     if (settings_.lightSampling != LightSampling::Bsdf && !lights_.empty() && bsdf.hasNonDelta()) {
         float pmf;
         uint32_t e = lights_.choose(uLight, sp.p, frame.n, pmf);
@@ -113,9 +114,7 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, uint32_t slot, 
 
     // Sample the BSDF to continue the path.
     BsdfSample bs;
-    if (!bsdf.sample(woLocal, sampler.get1D(sampleDimension(depth, SampleUse::Lobe)),
-                     sampler.get2D(sampleDimension(depth, SampleUse::Direction)), bs))
-        return false;
+    if (!bsdf.sample(woLocal, u.lobe, u.direction, bs)) return false;
     Vec3 wi = frame.toWorld(bs.wi);
     if ((glm::dot(wi, sp.ng) > 0.0f) != (bs.wi.z > 0.0f)) return false; // see the shadow-ray note
     path.beta *= bs.weight;
@@ -129,7 +128,7 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, uint32_t slot, 
     // are not cut for carrying radiance that is only compressed.
     if (depth + 1 >= kRouletteDepth) {
         float q = std::min(1.0f, maxComponent(path.beta / path.etaScale));
-        if (sampler.get1D(sampleDimension(depth, SampleUse::Roulette)) >= q) return false;
+        if (u.roulette >= q) return false;
         path.beta /= q;
     }
     if (isBlack(path.beta)) return false;
@@ -137,6 +136,48 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, uint32_t slot, 
     path.depth = depth + 1;
     ++counts.continuation;
     return true;
+}
+
+// The draw stage: the sample values of every active path's vertex at `depth` (all paths of a
+// round are at one depth), into batch.draws by position in batch.active. The light choice
+// (with one light) and roulette (before kRouletteDepth) are left undrawn where no path reads them.
+template <typename Sampler>
+void drawVertexSamples(PathBatch<Sampler>& batch, int depth, bool lightChoice) {
+    const bool roulette = depth + 1 >= kRouletteDepth;
+    const size_t n = batch.active.size();
+    batch.draws.resize(n);
+    VertexDraws* out = batch.draws.data();
+    if constexpr (std::is_same_v<Sampler, SobolSampler>) {
+        // Dimension by dimension over all paths, as many per instruction as the CPU allows.
+        batch.pixelSeeds.resize(n);
+        batch.sampleIndices.resize(n);
+        batch.drawX.resize(n);
+        batch.drawY.resize(n);
+        for (size_t k = 0; k < n; ++k) {
+            const SobolSampler& s = batch.paths[batch.active[k]].sampler;
+            batch.pixelSeeds[k] = s.pixelSeed();
+            batch.sampleIndices[k] = s.sampleIndex();
+        }
+        auto draw = [&](SampleUse use, bool pair, auto&& put) {
+            SobolSampler::drawMany(batch.pixelSeeds.data(), batch.sampleIndices.data(), n, sampleDimension(depth, use),
+                                   batch.drawX.data(), pair ? batch.drawY.data() : nullptr);
+            for (size_t k = 0; k < n; ++k) put(out[k], batch.drawX[k], batch.drawY[k]);
+        };
+        if (lightChoice) draw(SampleUse::LightChoice, false, [](VertexDraws& d, float x, float) { d.lightChoice = x; });
+        draw(SampleUse::LightPoint, true, [](VertexDraws& d, float x, float y) { d.lightPoint = Vec2(x, y); });
+        draw(SampleUse::Lobe, false, [](VertexDraws& d, float x, float) { d.lobe = x; });
+        draw(SampleUse::Direction, true, [](VertexDraws& d, float x, float y) { d.direction = Vec2(x, y); });
+        if (roulette) draw(SampleUse::Roulette, false, [](VertexDraws& d, float x, float) { d.roulette = x; });
+    } else {
+        for (size_t k = 0; k < n; ++k) {
+            const Sampler& s = batch.paths[batch.active[k]].sampler;
+            out[k] = VertexDraws{lightChoice ? s.get1D(sampleDimension(depth, SampleUse::LightChoice)) : 0.0f,
+                                 s.get2D(sampleDimension(depth, SampleUse::LightPoint)),
+                                 s.get1D(sampleDimension(depth, SampleUse::Lobe)),
+                                 s.get2D(sampleDimension(depth, SampleUse::Direction)),
+                                 roulette ? s.get1D(sampleDimension(depth, SampleUse::Roulette)) : 0.0f};
+        }
+    }
 }
 
 template <typename Sampler>
@@ -149,12 +190,15 @@ void PathTracer::trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& cou
     counts.camera += n;
     active.resize(n);
     for (uint32_t i = 0; i < n; ++i) active[i] = i;
-    while (!active.empty()) {
-        // Shade: each path's hit, keeping those that go on.
+    for (int depth = 0; !active.empty(); ++depth) {
+        // Draw, then shade: each path's hit, keeping those that go on.
+        drawVertexSamples(batch, depth, lights_.size() > 1);
         shadows.clear();
         size_t going = 0;
-        for (uint32_t i : active)
-            if (shade(paths[i], hits[i], i, firstHits, shadows, counts)) active[going++] = i;
+        for (size_t k = 0; k < active.size(); ++k) {
+            const uint32_t i = active[k];
+            if (shade(paths[i], hits[i], batch.draws[k], i, firstHits, shadows, counts)) active[going++] = i;
+        }
         active.resize(going);
         // Shadow: a light sample's contribution counts where nothing blocks its ray. Added before
         // the path's next hit is shaded, as one path alone would.

@@ -30,6 +30,9 @@ struct PathBatch {
     std::vector<Hit> hits;            // each path's closest hit along its ray
     std::vector<uint32_t> active;     // slots of paths still going
     std::vector<ShadowQuery> shadows; // this round's shadow rays
+    std::vector<VertexDraws> draws;   // this round's sample values, by position in `active`
+    std::vector<uint32_t> pixelSeeds, sampleIndices; // the draw stage's inputs, by position in `active`
+    std::vector<float> drawX, drawY;  // and its outputs, one dimension at a time
 
     void clear() {
         paths.clear();
@@ -55,9 +58,10 @@ public:
     void trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& counts) const;
 
 private:
-    // Shade stage for one path at its hit: returns whether it goes on (its ray set to the next).
+    // Shade stage for one path at its hit, with its vertex's sample values: returns whether it
+    // goes on (its ray set to the next).
     template <typename Sampler>
-    bool shade(PathState<Sampler>& path, const Hit& hit, uint32_t slot, bool firstHits,
+    bool shade(PathState<Sampler>& path, const Hit& hit, const VertexDraws& u, uint32_t slot, bool firstHits,
                std::vector<ShadowQuery>& shadows, RayCounts& counts) const;
     // Weight of emission found by BSDF sampling (or by the camera) at a hit `distance` along the path's ray.
     template <typename Sampler>

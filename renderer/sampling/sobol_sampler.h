@@ -10,6 +10,7 @@
 #include "sampling/sampler.h"
 
 #include <array>
+#include <cstddef>
 
 namespace pt {
 
@@ -112,6 +113,18 @@ public:
         uint32_t y = sobol::scrambleReversed(sobol::dimension1Reversed(i), s ^ 0x63d83595u);
         return Vec2(sobol::toUnitFloat(x), sobol::toUnitFloat(y));
     }
+
+    uint32_t pixelSeed() const { return pixelSeed_; }
+    uint32_t sampleIndex() const { return sampleIndex_; }
+
+    // Dimension `dimension` of many paths at once (the staged loop's draw stage), each given by
+    // its pixelSeed() and sampleIndex(): x[k], and y[k] where y is given (a 2D draw), exactly as
+    // get1D and get2D return them. Sobol dimensions go 8 paths per instruction where the CPU has
+    // AVX2, 4 otherwise (sobol_draws.cpp).
+    static void drawMany(const uint32_t* pixelSeed, const uint32_t* sampleIndex, size_t count, uint32_t dimension,
+                         float* x, float* y);
+    // Which kernel drawMany uses: "avx2" or "sse2" (PT_SIMD=sse2 in the environment forces the latter).
+    static const char* drawKernel();
 
 private:
     // One hash per dimension (a 2D draw is one dimension of pairs): the Laine-Karras
