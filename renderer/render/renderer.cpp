@@ -8,6 +8,7 @@
 #include <pmmintrin.h>
 
 #include <chrono>
+#include <type_traits>
 
 namespace pt {
 
@@ -86,12 +87,14 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
                     return size_t(y - window_.y0) * size_t(window_.width()) + size_t(x - window_.x0);
                 };
                 PixelSums sums[kTileSize * kTileSize];
+                PixelKey keys[kTileSize * kTileSize];
                 uint32_t begin[kTileSize * kTileSize], tileBegin = last;
                 for (int y = y0; y < y1; ++y)
                     for (int x = x0; x < x1; ++x) {
-                        uint32_t& b = begin[(y - y0) * tileWidth + (x - x0)];
-                        b = startAt ? std::max(first, (*startAt)[filmPixel(x, y)]) : first;
-                        tileBegin = std::min(tileBegin, b);
+                        const int k = (y - y0) * tileWidth + (x - x0);
+                        begin[k] = startAt ? std::max(first, (*startAt)[filmPixel(x, y)]) : first;
+                        tileBegin = std::min(tileBegin, begin[k]);
+                        keys[k] = Sampler::pixelKey(uint32_t(y) * uint32_t(width_) + uint32_t(x), settings_.seed);
                     }
                 // Paths go into the batch sample by sample, each sample's pixels row by row in
                 // groups of kPacket, whose camera rays are traced as one packet. Results are summed
@@ -109,18 +112,38 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
                             if (batch.paths.size() + size_t(lanes) > kBatchPaths) traceBatch();
                             Ray rays[kPacket];
                             bool active[kPacket] = {};
-                            bool any = false;
+                            int count = 0, lane[kPacket];
+                            const size_t start = batch.paths.size();
                             for (int i = 0; i < lanes; ++i) {
                                 const int k = (y - y0) * tileWidth + (gx + i - x0);
                                 if (s < begin[k]) continue;
-                                active[i] = any = true;
+                                active[i] = true;
+                                lane[count++] = i;
                                 PathState<Sampler>& p = batch.paths.emplace_back();
-                                p.sampler = Sampler(uint32_t(y) * uint32_t(width_) + uint32_t(gx + i), s, settings_.seed);
+                                p.sampler = Sampler(keys[k], s);
                                 p.pixel = uint32_t(k);
-                                Vec2 jitter = p.sampler.get2D(kPixelDimension); // box filter: uniform inside the pixel
-                                rays[i] = p.ray = camera_.generate(float(gx + i) + jitter.x, float(y) + jitter.y);
                             }
-                            if (!any) continue;
+                            if (count == 0) continue;
+                            // The position inside the pixel (a box filter: uniform there), for the
+                            // group's paths together where the sampler draws many at once.
+                            Vec2 jitter[kPacket];
+                            if constexpr (std::is_same_v<Sampler, SobolSampler>) {
+                                uint32_t seeds[kPacket], indices[kPacket];
+                                float jx[kPacket], jy[kPacket];
+                                for (int j = 0; j < count; ++j) {
+                                    seeds[j] = batch.paths[start + size_t(j)].sampler.pixelSeed();
+                                    indices[j] = s;
+                                }
+                                SobolSampler::drawMany(seeds, indices, size_t(count), kPixelDimension, jx, jy);
+                                for (int j = 0; j < count; ++j) jitter[j] = Vec2(jx[j], jy[j]);
+                            } else {
+                                for (int j = 0; j < count; ++j) jitter[j] = batch.paths[start + size_t(j)].sampler.get2D(kPixelDimension);
+                            }
+                            for (int j = 0; j < count; ++j) {
+                                const int i = lane[j];
+                                rays[i] = batch.paths[start + size_t(j)].ray =
+                                    camera_.generate(float(gx + i) + jitter[j].x, float(y) + jitter[j].y);
+                            }
                             Hit hits[kPacket];
                             accel_.intersectCameraRays(rays, active, lanes, hits);
                             for (int i = 0; i < lanes; ++i)

@@ -23,12 +23,20 @@ constexpr uint32_t sampleDimension(int depth, SampleUse use) {
 // Two 24-bit uniform floats in [0, 1) from a 64-bit hash (its top and middle bits).
 inline Vec2 unitPairOf(uint64_t h) { return Vec2(float(h >> 40) * 0x1p-24f, float((h >> 16) & 0xffffffu) * 0x1p-24f); }
 
+// A pixel's part of a sampler's key (pixel index and seed), made by Sampler::pixelKey.
+struct PixelKey {
+    uint64_t value;
+};
+
 // Independent uniform values: each dimension a hash of the pixel's key and the dimension.
 class IndependentSampler {
 public:
     IndependentSampler() = default;
     IndependentSampler(uint32_t pixelIndex, uint32_t sampleIndex, uint64_t seed)
-        : key_(hashCombine(hashCombine(seed, pixelIndex), sampleIndex)) {}
+        : IndependentSampler(pixelKey(pixelIndex, seed), sampleIndex) {}
+    // What the sampler keeps of (pixel, seed): computed once per pixel, not once per sample.
+    static PixelKey pixelKey(uint32_t pixelIndex, uint64_t seed) { return PixelKey{hashCombine(seed, pixelIndex)}; }
+    IndependentSampler(PixelKey pixel, uint32_t sampleIndex) : key_(hashCombine(pixel.value, sampleIndex)) {}
     float get1D(uint32_t dimension) const { return unitPairOf(hashCombine(key_, dimension)).x; }
     Vec2 get2D(uint32_t dimension) const { return unitPairOf(hashCombine(key_, dimension)); }
 

@@ -96,7 +96,13 @@ public:
 
     SobolSampler() = default;
     SobolSampler(uint32_t pixelIndex, uint32_t sampleIndex, uint64_t seed)
-        : pixelSeed_(uint32_t(hashCombine(seed ^ 0x5bd1e995ULL, pixelIndex))), sampleIndex_(sampleIndex),
+        : SobolSampler(pixelKey(pixelIndex, seed), sampleIndex) {}
+    // What the sampler keeps of (pixel, seed): computed once per pixel, not once per sample.
+    static PixelKey pixelKey(uint32_t pixelIndex, uint64_t seed) {
+        return PixelKey{uint32_t(hashCombine(seed ^ 0x5bd1e995ULL, pixelIndex))};
+    }
+    SobolSampler(PixelKey pixel, uint32_t sampleIndex)
+        : pixelSeed_(uint32_t(pixel.value)), sampleIndex_(sampleIndex),
           reversedIndex_(sobol::reverseBits(sampleIndex)) {} // the shuffle works on the reversed index
 
     float get1D(uint32_t dimension) const {
