@@ -18,6 +18,7 @@ inline float powerHeuristic(float pdfA, float pdfB) {
 }
 
 constexpr int kRouletteDepth = 3; // scattering events before Russian roulette starts
+constexpr size_t kPrefetchAhead = 4; // paths between a shading record's prefetch and its use
 
 } // namespace
 
@@ -196,6 +197,12 @@ void PathTracer::trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& cou
         shadows.clear();
         size_t going = 0;
         for (size_t k = 0; k < active.size(); ++k) {
+            // The hit's shading record is the first load after Embree returns, and a cache miss:
+            // ask for the one a few paths ahead while this one is shaded.
+            if (k + kPrefetchAhead < active.size()) {
+                const Hit& ahead = hits[active[k + kPrefetchAhead]];
+                if (ahead.found() && !ahead.onSphere) __builtin_prefetch(&triangles_[ahead.prim]);
+            }
             const uint32_t i = active[k];
             if (shade(paths[i], hits[i], batch.draws[k], i, firstHits, shadows, counts)) active[going++] = i;
         }
