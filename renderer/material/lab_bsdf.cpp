@@ -4,27 +4,6 @@
 
 namespace pt {
 
-LabBsdf LabBsdf::make(const LabParameters& m, float cosThetaO, HemisphereSampling hemisphere) {
-    LabBsdf b;
-    b.eta = m.eta;
-    b.alpha = m.alpha > kSmoothAlpha ? m.alpha : 0.0f;
-    b.hemisphere = hemisphere;
-    Spectrum wF = m.blend * schlickFresnel(m.r0, cosThetaO);
-    Spectrum rest = Spectrum(1.0f) - wF;
-    b.mirror = wF * m.ks;
-    b.refract = rest * m.transparency * m.refractTint;
-    b.diffuse = rest * (1.0f - m.transparency) * m.kd;
-
-    float am = average(b.mirror), at = average(b.refract), ad = average(b.diffuse);
-    float sum = am + at + ad;
-    if (sum > 0.0f) {
-        b.pMirror = am / sum;
-        b.pRefract = at / sum;
-        b.pDiffuse = ad / sum;
-    }
-    return b;
-}
-
 bool refractDirection(const Vec3& wo, float etaRel, Vec3& wt) {
     float cosI = std::abs(wo.z);
     float sin2T = (1.0f - cosI * cosI) / (etaRel * etaRel);

@@ -120,6 +120,29 @@ inline Spectrum schlickFresnel(const Spectrum& r0, float cosTheta) {
     return r0 + (Spectrum(1.0f) - r0) * (m2 * m2 * m);
 }
 
+// Inline, so that the lobes are built where the caller keeps them: a LabBsdf returned from
+// another file was copied twice on its way into a Bsdf, each copy a failed store forwarding.
+inline LabBsdf LabBsdf::make(const LabParameters& m, float cosThetaO, HemisphereSampling hemisphere) {
+    LabBsdf b;
+    b.eta = m.eta;
+    b.alpha = m.alpha > kSmoothAlpha ? m.alpha : 0.0f;
+    b.hemisphere = hemisphere;
+    Spectrum wF = m.blend * schlickFresnel(m.r0, cosThetaO);
+    Spectrum rest = Spectrum(1.0f) - wF;
+    b.mirror = wF * m.ks;
+    b.refract = rest * m.transparency * m.refractTint;
+    b.diffuse = rest * (1.0f - m.transparency) * m.kd;
+
+    float am = average(b.mirror), at = average(b.refract), ad = average(b.diffuse);
+    float sum = am + at + ad;
+    if (sum > 0.0f) {
+        b.pMirror = am / sum;
+        b.pRefract = at / sum;
+        b.pDiffuse = ad / sum;
+    }
+    return b;
+}
+
 // Refracts wo through the plane z = 0 with relative index etaRel = eta_transmitted /
 // eta_incident. Returns false on total internal reflection.
 bool refractDirection(const Vec3& wo, float etaRel, Vec3& wt);
