@@ -1,11 +1,12 @@
-// Owen-scrambled Sobol draws for W paths at once: sobol_sampler.h's arithmetic on vectors of W
-// 32-bit lanes (GCC vector extensions), written once for any W. W = 1 is the scalar form, which
+// Owen-scrambled Sobol draws for W paths at once: sobol_sampler.h's bit-level steps (templates)
+// run on vectors of W 32-bit lanes (GCC vector extensions). W = 1 is the scalar form, which
 // tests hold the wider ones to bit for bit; sobol_draws.cpp instantiates W = 4 (SSE2, any
 // x86-64) and sobol_draws_avx2.cpp W = 8 (compiled with -mavx2, chosen at run time).
 //
-// Everything here has internal linkage (an unnamed namespace): each file that includes it keeps
-// its own copy, compiled for its own instruction set, so the linker cannot hand an AVX2 copy to
-// code that runs on a machine without AVX2.
+// Nothing built for AVX2 may reach code that runs without it. What is here has internal linkage
+// (an unnamed namespace): each file keeps its own copy, built for its own instruction set. The
+// shared steps it calls are instantiated for the lane vector type, and the 8-lane type only in
+// the AVX2 file, so no other file links to those copies; 8 lanes must stay there.
 #pragma once
 
 #include "sampling/sobol_sampler.h"
@@ -31,32 +32,9 @@ struct SobolLanes {
         return v;
     }
 
-    static U32 reverseBits(U32 x) {
-        x = (x >> 16) | (x << 16);
-        x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-        x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-        x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-        return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-    }
-    static U32 laineKarrasPermutation(U32 x, U32 seed) {
-        x += seed;
-        x ^= x * 0x6c50b47cu;
-        x ^= x * 0xb82f1e52u;
-        x ^= x * 0xc7afe638u;
-        x ^= x * 0x8d22f6e6u;
-        return x;
-    }
-    static U32 mix32(U32 x) {
-        x ^= x >> 16;
-        x *= 0x7feb352du;
-        x ^= x >> 15;
-        x *= 0x846ca68bu;
-        x ^= x >> 16;
-        return x;
-    }
     // The byte tables, lane by lane (no gather below AVX2, and AVX2's is no faster for four).
-    // Read as plain memory: no call to a shared inline function, whose out-of-line copy the
-    // AVX2 file might otherwise provide.
+    // Read as plain memory: sobol::dimension1Reversed takes a uint32_t, and an out-of-line copy
+    // of it from the AVX2 file could serve every other file.
     static U32 dimension1Reversed(U32 index) {
         const uint32_t* t = reinterpret_cast<const uint32_t*>(&sobol::kDimension1ByteTables);
         U32 r;
@@ -73,10 +51,10 @@ struct SobolLanes {
     // W paths' values of one Sobol dimension: what SobolSampler::get1D (and get2D's second
     // coordinate, into y where given) return.
     static void block(const uint32_t* pixelSeed, const uint32_t* sampleIndex, uint32_t dimension, float* x, float* y) {
-        const U32 s = mix32(load(pixelSeed) + 0x9e3779b9u * (dimension + 1));
-        const U32 i = reverseBits(laineKarrasPermutation(reverseBits(load(sampleIndex)), s));
-        store(x, toUnitFloat(reverseBits(laineKarrasPermutation(i, s ^ 0xa511e9b3u))));
-        if (y) store(y, toUnitFloat(reverseBits(laineKarrasPermutation(dimension1Reversed(i), s ^ 0x63d83595u))));
+        const U32 s = sobol::mix32(load(pixelSeed) + 0x9e3779b9u * (dimension + 1));
+        const U32 i = sobol::reverseBits(sobol::laineKarrasPermutation(sobol::reverseBits(load(sampleIndex)), s));
+        store(x, toUnitFloat(sobol::scrambleReversed(i, s ^ 0xa511e9b3u)));
+        if (y) store(y, toUnitFloat(sobol::scrambleReversed(dimension1Reversed(i), s ^ 0x63d83595u)));
     }
 
     // Dimension `dimension` (below SobolSampler::kSobolDimensions) of `count` paths, each given

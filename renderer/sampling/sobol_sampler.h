@@ -16,8 +16,12 @@ namespace pt {
 
 namespace sobol {
 
-inline uint32_t reverseBits(uint32_t x) {
-    x = __builtin_bswap32(x);
+// The bit-level steps below are templates over a 32-bit integer or a vector of them, so that
+// the SIMD draw kernels (sobol_lanes.h) run this same source on their lanes.
+template <typename U>
+inline U reverseBits(U x) {
+    x = (x >> 16) | (x << 16); // with the next line, a byte swap (GCC emits bswap for 32 bits)
+    x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
     x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
     x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
     return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
@@ -25,7 +29,8 @@ inline uint32_t reverseBits(uint32_t x) {
 
 // A hash in which each bit depends only on lower bits: applied to bit-reversed values it is an
 // Owen scramble (Laine and Karras 2011, with Burley's constants).
-inline uint32_t laineKarrasPermutation(uint32_t x, uint32_t seed) {
+template <typename U>
+inline U laineKarrasPermutation(U x, U seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
@@ -35,7 +40,8 @@ inline uint32_t laineKarrasPermutation(uint32_t x, uint32_t seed) {
 }
 
 // Owen scramble of a 32-bit fraction given in bit-reversed form; returns it in normal order.
-inline uint32_t scrambleReversed(uint32_t reversed, uint32_t seed) {
+template <typename U>
+inline U scrambleReversed(U reversed, U seed) {
     return reverseBits(laineKarrasPermutation(reversed, seed));
 }
 
@@ -74,7 +80,8 @@ inline uint32_t dimension1(uint32_t index) { return reverseBits(dimension1Revers
 inline float toUnitFloat(uint32_t x) { return float(x >> 8) * 0x1p-24f; }
 
 // A cheap 32-bit mix (the "lowbias32" finalizer) for per-dimension seeds.
-inline uint32_t mix32(uint32_t x) {
+template <typename U>
+inline U mix32(U x) {
     x ^= x >> 16;
     x *= 0x7feb352du;
     x ^= x >> 15;
