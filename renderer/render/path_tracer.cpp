@@ -3,8 +3,6 @@
 #include "material/evaluate_material.h"
 #include "render/surface_point.h"
 
-#include <type_traits>
-
 namespace pt {
 namespace {
 
@@ -147,38 +145,16 @@ void drawVertexSamples(PathBatch<Sampler>& batch, int depth, bool lightChoice) {
     const bool roulette = depth + 1 >= kRouletteDepth;
     const size_t n = batch.active.size();
     batch.draws.resize(n);
-    VertexDraws* out = batch.draws.data();
-    if constexpr (std::is_same_v<Sampler, SobolSampler>) {
-        // Dimension by dimension over all paths, as many per instruction as the CPU allows.
-        batch.pixelSeeds.resize(n);
-        batch.sampleIndices.resize(n);
-        batch.drawX.resize(n);
-        batch.drawY.resize(n);
-        for (size_t k = 0; k < n; ++k) {
-            const SobolSampler& s = batch.paths[batch.active[k]].sampler;
-            batch.pixelSeeds[k] = s.pixelSeed();
-            batch.sampleIndices[k] = s.sampleIndex();
-        }
-        auto draw = [&](SampleUse use, bool pair, auto&& put) {
-            SobolSampler::drawMany(batch.pixelSeeds.data(), batch.sampleIndices.data(), n, sampleDimension(depth, use),
-                                   batch.drawX.data(), pair ? batch.drawY.data() : nullptr);
-            for (size_t k = 0; k < n; ++k) put(out[k], batch.drawX[k], batch.drawY[k]);
-        };
-        if (lightChoice) draw(SampleUse::LightChoice, false, [](VertexDraws& d, float x, float) { d.lightChoice = x; });
-        draw(SampleUse::LightPoint, true, [](VertexDraws& d, float x, float y) { d.lightPoint = Vec2(x, y); });
-        draw(SampleUse::Lobe, false, [](VertexDraws& d, float x, float) { d.lobe = x; });
-        draw(SampleUse::Direction, true, [](VertexDraws& d, float x, float y) { d.direction = Vec2(x, y); });
-        if (roulette) draw(SampleUse::Roulette, false, [](VertexDraws& d, float x, float) { d.roulette = x; });
-    } else {
-        for (size_t k = 0; k < n; ++k) {
-            const Sampler& s = batch.paths[batch.active[k]].sampler;
-            out[k] = VertexDraws{lightChoice ? s.get1D(sampleDimension(depth, SampleUse::LightChoice)) : 0.0f,
-                                 s.get2D(sampleDimension(depth, SampleUse::LightPoint)),
-                                 s.get1D(sampleDimension(depth, SampleUse::Lobe)),
-                                 s.get2D(sampleDimension(depth, SampleUse::Direction)),
-                                 roulette ? s.get1D(sampleDimension(depth, SampleUse::Roulette)) : 0.0f};
-        }
-    }
+    batch.chooseForDraws(batch.active.data(), n);
+    auto draw = [&](SampleUse use, bool pair, auto&& put) {
+        batch.drawDimension(sampleDimension(depth, use), pair);
+        for (size_t k = 0; k < n; ++k) put(batch.draws[k], batch.drawX[k], batch.drawY[k]);
+    };
+    if (lightChoice) draw(SampleUse::LightChoice, false, [](VertexDraws& d, float x, float) { d.lightChoice = x; });
+    draw(SampleUse::LightPoint, true, [](VertexDraws& d, float x, float y) { d.lightPoint = Vec2(x, y); });
+    draw(SampleUse::Lobe, false, [](VertexDraws& d, float x, float) { d.lobe = x; });
+    draw(SampleUse::Direction, true, [](VertexDraws& d, float x, float y) { d.direction = Vec2(x, y); });
+    if (roulette) draw(SampleUse::Roulette, false, [](VertexDraws& d, float x, float) { d.roulette = x; });
 }
 
 template <typename Sampler>

@@ -18,6 +18,7 @@
 #include "sampling/sobol_sampler.h"
 #include "scene/scene.h"
 
+#include <type_traits>
 #include <vector>
 
 namespace pt {
@@ -31,13 +32,55 @@ struct PathBatch {
     std::vector<uint32_t> active;     // slots of paths still going
     std::vector<ShadowQuery> shadows; // this round's shadow rays
     std::vector<VertexDraws> draws;   // this round's sample values, by position in `active`
-    std::vector<uint32_t> pixelSeeds, sampleIndices; // the draw stage's inputs, by position in `active`
-    std::vector<float> drawX, drawY;  // and its outputs, one dimension at a time
+    std::vector<float> drawX, drawY;  // drawDimension's values, by position in the chosen slots
 
     void clear() {
         paths.clear();
         hits.clear();
     }
+
+    // Sample values of many paths, one dimension at a time: chooseForDraws(slots, n) picks
+    // paths[slots[k]], k < n (`slots` must outlive the draws), then each drawDimension writes
+    // one dimension of theirs to drawX[k] (and drawY[k] for a 2D draw). Sobol samplers draw
+    // together, in SIMD lanes (SobolSampler::drawMany); others one by one. The camera stage and
+    // the loop's draw stage both draw through here.
+    void chooseForDraws(const uint32_t* slots, size_t n) {
+        drawSlots_ = slots;
+        drawCount_ = n;
+        drawX.resize(n);
+        drawY.resize(n);
+        if constexpr (std::is_same_v<Sampler, SobolSampler>) {
+            pixelSeeds_.resize(n);
+            sampleIndices_.resize(n);
+            for (size_t k = 0; k < n; ++k) {
+                const SobolSampler& s = paths[slots[k]].sampler;
+                pixelSeeds_[k] = s.pixelSeed();
+                sampleIndices_[k] = s.sampleIndex();
+            }
+        }
+    }
+    void drawDimension(uint32_t dimension, bool pair) {
+        if constexpr (std::is_same_v<Sampler, SobolSampler>) {
+            SobolSampler::drawMany(pixelSeeds_.data(), sampleIndices_.data(), drawCount_, dimension, drawX.data(),
+                                   pair ? drawY.data() : nullptr);
+        } else {
+            for (size_t k = 0; k < drawCount_; ++k) {
+                const Sampler& s = paths[drawSlots_[k]].sampler;
+                if (pair) {
+                    const Vec2 v = s.get2D(dimension);
+                    drawX[k] = v.x;
+                    drawY[k] = v.y;
+                } else {
+                    drawX[k] = s.get1D(dimension);
+                }
+            }
+        }
+    }
+
+private:
+    const uint32_t* drawSlots_ = nullptr;
+    size_t drawCount_ = 0;
+    std::vector<uint32_t> pixelSeeds_, sampleIndices_; // SobolSampler::drawMany's inputs
 };
 
 class PathTracer {

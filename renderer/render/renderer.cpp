@@ -8,7 +8,6 @@
 #include <pmmintrin.h>
 
 #include <chrono>
-#include <type_traits>
 
 namespace pt {
 
@@ -125,24 +124,15 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
                             }
                             if (count == 0) continue;
                             // The position inside the pixel (a box filter: uniform there), for the
-                            // group's paths together where the sampler draws many at once.
-                            Vec2 jitter[kPacket];
-                            if constexpr (std::is_same_v<Sampler, SobolSampler>) {
-                                uint32_t seeds[kPacket], indices[kPacket];
-                                float jx[kPacket], jy[kPacket];
-                                for (int j = 0; j < count; ++j) {
-                                    seeds[j] = batch.paths[start + size_t(j)].sampler.pixelSeed();
-                                    indices[j] = s;
-                                }
-                                SobolSampler::drawMany(seeds, indices, size_t(count), kPixelDimension, jx, jy);
-                                for (int j = 0; j < count; ++j) jitter[j] = Vec2(jx[j], jy[j]);
-                            } else {
-                                for (int j = 0; j < count; ++j) jitter[j] = batch.paths[start + size_t(j)].sampler.get2D(kPixelDimension);
-                            }
+                            // group's paths together.
+                            uint32_t slots[kPacket];
+                            for (int j = 0; j < count; ++j) slots[j] = uint32_t(start) + uint32_t(j);
+                            batch.chooseForDraws(slots, size_t(count));
+                            batch.drawDimension(kPixelDimension, true);
                             for (int j = 0; j < count; ++j) {
                                 const int i = lane[j];
                                 rays[i] = batch.paths[start + size_t(j)].ray =
-                                    camera_.generate(float(gx + i) + jitter[j].x, float(y) + jitter[j].y);
+                                    camera_.generate(float(gx + i) + batch.drawX[size_t(j)], float(y) + batch.drawY[size_t(j)]);
                             }
                             Hit hits[kPacket];
                             accel_.intersectCameraRays(rays, active, lanes, hits);
