@@ -88,7 +88,8 @@ AovSelection parseAovList(const std::string& value) {
         else if (name == "albedo") aovs.albedo = true;
         else if (name == "normal") aovs.normal = true;
         else if (name == "depth") aovs.depth = true;
-        else throw UsageError("option --aov: unknown layer \"" + name + "\"; known: variance, albedo, normal, depth");
+        else if (name == "spp") aovs.spp = true;
+        else throw UsageError("option --aov: unknown layer \"" + name + "\"; known: variance, albedo, normal, depth, spp");
     }
     return aovs;
 }

@@ -32,7 +32,8 @@ was stopped) are reported, and the image holds what there is.
 
 options (default in brackets):
   -o, --output PATH    the merged image, .exr or .png [merged.exr]
-  --aov LIST           extra EXR layers from the parts' sums: variance, albedo, normal, depth
+  --aov LIST           extra EXR layers from the parts' sums: variance, albedo, normal, depth,
+                       spp (each pixel's sample count)
                        (albedo, normal and depth need parts rendered with them) [none]
   -q, --quiet          print no warnings, only errors and the summary line
   -h, --help           show this help
@@ -119,6 +120,7 @@ int mergeCommand(int argc, char** argv) {
     Image job; // the first part's metadata
     std::optional<Film> film;
     double seconds = 0.0;
+    bool budgeted = false; // parts stopped by --noise or --time: pixels short of -spp are expected
     for (const std::string& path : paths) {
         Image image;
         Film part(0, 0);
@@ -155,6 +157,7 @@ int mergeCommand(int argc, char** argv) {
                 film->addPixel(size_t(y) * size_t(in.fullWidth) + size_t(x), part,
                                size_t(y - in.y0) * size_t(image.width) + size_t(x - in.x0));
         seconds += in.seconds;
+        budgeted |= !attributeText(image, "pt:noise").empty() || !attributeText(image, "pt:time").empty();
         merged.push_back({path, in, part.hasFirstHitLayers()});
     }
     const int width = merged[0].info.fullWidth, height = merged[0].info.fullHeight;
@@ -177,7 +180,9 @@ int mergeCommand(int argc, char** argv) {
         short_ += n < spp;
         fewest = std::min(fewest, n);
     }
-    if (short_ > 0 && !quiet) {
+    if (short_ > 0 && !quiet && budgeted && empty > 0)
+        std::fprintf(err, "pt merge: warning: %zu pixels hold no sample at all (no part covers them): they are black\n", empty);
+    if (short_ > 0 && !quiet && !budgeted) {
         std::vector<std::pair<uint32_t, uint32_t>> ranges;
         for (const Merged& m : merged)
             if (m.info.x0 == 0 && m.info.y0 == 0 && m.info.x1 == width && m.info.y1 == height)
@@ -198,7 +203,8 @@ int mergeCommand(int argc, char** argv) {
     for (const ImageAttribute& a : job.metadata) {
         if (a.name.rfind("pt:", 0) != 0 && a.name != "Software") continue; // OpenEXR's own header fields stay its own
         static const char* const kPartOnly[] = {"pt:part", "pt:samplesFirst", "pt:samplesLast", "pt:spp", "pt:renderSeconds",
-                                               "pt:threads", "pt:threadsRequested", "pt:interrupted"};
+                                               "pt:threads", "pt:threadsRequested", "pt:interrupted",
+                                               "pt:decidedAt", "pt:sppMax", "pt:sppMean", "pt:converged", "pt:outOfTime"};
         if (std::find_if(std::begin(kPartOnly), std::end(kPartOnly), [&](const char* n) { return a.name == n; }) ==
             std::end(kPartOnly))
             image.metadata.push_back(a);

@@ -47,7 +47,16 @@ options (default in brackets):
   -o, --output PATH      output image [out.exr]; the extension picks the format:
                            .exr  linear float RGB, metadata, and any --aov layers
                            .png  sRGB-encoded 8-bit RGB
-  -spp, --spp N          samples per pixel [16]
+  -spp, --spp N          samples per pixel [16; with --time or --noise, the most a pixel
+                         may take: 4096]
+  --time SECONDS         stop after at most SECONDS of rendering, at the last pass boundary
+                         the time allows (every pixel has at least one sample); without
+                         --noise the image equals -spp N for the N it reached [none]
+  --noise E              adaptive sampling: a pixel stops once the standard error of its
+                         mean, relative to its brightness, is at most E (0.01 to 0.05 are
+                         typical; pooled over its 3x3 neighbours, decided between passes,
+                         so the image does not depend on --threads) [off]
+  --min-spp N            with --noise, samples every pixel takes before it may stop [16]
   --res WxH              image size in pixels [512x512; a glTF camera's aspect ratio
                          gives 512 across its longer side]
   --camera NAME|INDEX    camera by name, or by 0-based index in file order; a name two
@@ -73,6 +82,7 @@ options (default in brackets):
                            albedo    first-hit reflectance, all lobes (albedo.R/G/B)
                            normal    first-hit shading normal facing the camera (normal.X/Y/Z)
                            depth     distance to the first hit, +inf where none (depth.Z)
+                           spp       the samples each pixel holds (spp.Z; --noise, --time)
   --env PATH             light the scene with an HDR lat-long environment map (EXR, HDR,
                          float TIFF; +y up, laid out as in Blender), importance-sampled
                          as a light; it replaces the MTL's newenvironment, and without
@@ -115,10 +125,18 @@ exit status: 0 success, 1 bad input (scene, texture) or a failed write, 2 bad us
              an output that cannot be created or is also an input), 130 or 143 interrupted
 )";
 
+// The longest --time: a year, beyond any batch job.
+constexpr double kMaxTimeBudget = 365.0 * 24 * 3600;
+// -spp when --time or --noise decide when to stop and -spp is not given: the cap of a pixel.
+constexpr long long kBudgetSppCap = 4096;
+
 struct RenderArgs {
     std::string scene;
     std::string output = "out.exr";
     long long spp = 16;
+    bool sppGiven = false;
+    SampleBudget budget;
+    bool minSppGiven = false;
     int width = 512, height = 512;
     bool resGiven = false;
     double exposure = 0.0; // EV: the image is scaled by 2^exposure
@@ -186,6 +204,20 @@ RenderArgs parseArgs(int argc, char** argv) {
             r.output = args.value(opt);
         } else if (opt == "spp") {
             r.spp = args.integer(opt, 1, 1 << 24);
+            r.sppGiven = true;
+        } else if (opt == "time") {
+            r.budget.seconds = args.number(opt, 0.0, kMaxTimeBudget);
+            if (!(r.budget.seconds > 0.0))
+                throw UsageError("option " + args.spelled(opt) + ": expected a time in seconds above 0, got 0");
+        } else if (opt == "noise") {
+            double e = args.number(opt, 0.0, 1.0);
+            if (!(e > 0.0 && e < 1.0))
+                throw UsageError("option " + args.spelled(opt) + ": expected a relative error between 0 and 1 (exclusive), "
+                                 "such as 0.02, got " + shortNumber(e));
+            r.budget.noise = float(e);
+        } else if (opt == "min-spp") {
+            r.budget.minSpp = uint32_t(args.integer(opt, 1, 1 << 24));
+            r.minSppGiven = true;
         } else if (opt == "res") {
             parseResolution(args.value(opt), r.width, r.height);
             r.resGiven = true;
@@ -306,6 +338,14 @@ RenderArgs parseArgs(int argc, char** argv) {
                          "(the sun's disk where it is up) " + shortNumber(peak) + ", beyond the 1e18 whose samples fit "
                          "in float; at most " + shortNumber(kMaxRadiance / (peak / r.skyParameters.scale)) +
                          " for this sun and turbidity");
+    if (!r.sppGiven && (r.budget.seconds > 0.0 || r.budget.adaptive())) r.spp = kBudgetSppCap;
+    if (r.minSppGiven && !r.budget.adaptive()) throw UsageError("--min-spp needs --noise");
+    if (r.budget.adaptive() && r.budget.minSpp > r.spp)
+        throw UsageError("--min-spp " + std::to_string(r.budget.minSpp) + " is above -spp " + std::to_string(r.spp) +
+                         ", the most samples a pixel takes");
+    if (r.budget.adaptive() && r.samplesGiven)
+        throw UsageError("--noise decides per pixel from all of its samples, which a --samples part does not see; "
+                         "split an adaptive render with --crop (each crop adaptive over its own pixels)");
     bool anyAov = r.aovs.any();
     if ((r.part() || !r.resume.empty()) && formatFromPath(r.output) != ImageFormat::Exr)
         throw UsageError(std::string(r.samplesGiven ? "--samples" : r.cropGiven ? "--crop" : "--resume") +
@@ -349,7 +389,8 @@ size_t pickCamera(const Scene& scene, const std::string& spec) {
 // it never wraps onto a second line.
 class ProgressLine {
 public:
-    ProgressLine(const RenderProgress& progress, uint32_t spp, bool enabled) : progress_(progress), spp_(spp) {
+    ProgressLine(const RenderProgress& progress, uint32_t spp, const SampleBudget& budget, bool enabled)
+        : progress_(progress), spp_(spp), budget_(budget) {
         if (enabled) thread_ = std::thread([this] { run(); });
     }
     ~ProgressLine() { stop(); }
@@ -373,11 +414,18 @@ private:
             double total = double(std::max<uint64_t>(1, progress_.total));
             double f = double(progress_.done.load()) / total;
             double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            char text[160];
+            // With a time budget the time is the measure of progress; with --noise the share of
+            // pixels converged is shown, and no estimate of what is left (the samples are not known).
+            if (budget_.seconds > 0.0) f = std::max(f, std::min(1.0, elapsed / budget_.seconds));
+            char text[200];
             int n = std::snprintf(text, sizeof text, "%5.1f%%  %u/%u spp  %.1f s elapsed", 100.0 * f,
                                   progress_.samplesComplete.load(), spp_, elapsed);
-            if (f > 0.0 && n > 0 && size_t(n) < sizeof text)
-                std::snprintf(text + n, sizeof text - size_t(n), ", about %.1f s left", elapsed * (1.0 - f) / f);
+            if (budget_.adaptive() && n > 0 && size_t(n) < sizeof text)
+                n += std::snprintf(text + n, sizeof text - size_t(n), ", %.1f%% of pixels converged",
+                                   100.0 * double(progress_.converged.load()) / double(std::max<uint64_t>(1, progress_.pixels)));
+            if (f > 0.0 && !budget_.adaptive() && n > 0 && size_t(n) < sizeof text)
+                std::snprintf(text + n, sizeof text - size_t(n), ", about %.1f s left",
+                              budget_.seconds > 0.0 ? std::max(0.0, budget_.seconds - elapsed) : elapsed * (1.0 - f) / f);
             struct winsize ws {};
             size_t width = ioctl(STDERR_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0 ? ws.ws_col : 80;
             std::string line(text);
@@ -389,6 +437,7 @@ private:
 
     const RenderProgress& progress_;
     uint32_t spp_;
+    SampleBudget budget_;
     std::thread thread_;
     std::mutex mutex_;
     std::condition_variable wake_;
@@ -455,13 +504,27 @@ void addJobMetadata(Image& image, const RenderArgs& args, const Scene& scene, si
     text("pt:hemisphere", name(args.settings.hemisphere));
     real("pt:clamp", args.settings.clamp);
     real("pt:exposure", args.exposure);
+    if (args.budget.adaptive()) { // a part must be resumed and merged with the same rule
+        real("pt:noise", args.budget.noise);
+        integer("pt:minSpp", std::min<long long>(args.budget.minSpp, args.spp));
+    }
 }
 
 // What this run did, after the job's fields; a part's share of the job and its window.
 void addRunMetadata(Image& image, const RenderArgs& args, const RenderResult& result, int threads,
                     uint32_t first, uint32_t last, const PixelWindow& window, bool part) {
     auto integer = [&](const char* k, long long v) { image.metadata.push_back(ImageAttribute::integerValue(k, v)); };
-    image.metadata.push_back(ImageAttribute::integerValue("pt:spp", result.film.minSamples()));
+    const Film& film = result.film;
+    image.metadata.push_back(ImageAttribute::integerValue("pt:spp", film.minSamples()));
+    if (film.maxSamples() != film.minSamples()) { // adaptive, or a resumed part: per pixel in --aov spp
+        integer("pt:sppMax", film.maxSamples());
+        image.metadata.push_back(ImageAttribute::floatValue("pt:sppMean", film.meanSamples()));
+    }
+    if (film.hasConvergence()) integer("pt:converged", (long long)film.convergedCount());
+    if (args.budget.seconds > 0.0) {
+        image.metadata.push_back(ImageAttribute::floatValue("pt:time", args.budget.seconds));
+        integer("pt:outOfTime", result.outOfTime ? 1 : 0);
+    }
     integer("pt:threadsRequested", args.threads);
     integer("pt:threads", threads);
     image.metadata.push_back(ImageAttribute::floatValue("pt:renderSeconds", result.seconds));
@@ -643,13 +706,16 @@ int renderCommand(int argc, char** argv) {
     double bvhSeconds = secondsSince(t1);
 
     setStopTarget(&progress.cancel);
-    ProgressLine line(progress, last - first, !args.quiet && isatty(STDERR_FILENO));
+    ProgressLine line(progress, last - first, args.budget, !args.quiet && isatty(STDERR_FILENO));
+    // The dark floor of adaptive sampling is meant in the image's units, after --exposure.
+    SampleBudget budget = args.budget;
+    budget.darkFloor = float(1e-3 / std::exp2(args.exposure));
     std::optional<RenderResult> rendered;
     try {
         RenderRange range{first, last, window, args.resume.empty() ? nullptr : &resumeFilm};
         rendered.emplace(renderImage(scene, *accel, scene.cameras[cameraIndex], args.width, args.height,
                                      uint32_t(args.spp), threads, args.settings, &progress,
-                                     args.aovs.firstHit(), range));
+                                     args.aovs.firstHit(), range, budget));
     } catch (const std::bad_alloc&) {
         line.stop();
         std::fprintf(err, "pt: error: out of memory for a %dx%d image; choose a smaller --res\n", args.width, args.height);
@@ -699,7 +765,8 @@ int renderCommand(int argc, char** argv) {
     if (stopSignal() != 0)
         std::fprintf(err, "pt: the signal came after the last sample; the whole image was written\n");
     // A few discarded samples are rounding; many mean light lost somewhere: say so, not just count.
-    uint64_t samples = uint64_t(window.width()) * window.height() * result.film.minSamples();
+    const Film& film = result.film;
+    uint64_t samples = uint64_t(std::llround(double(window.width()) * window.height() * film.meanSamples()));
     if (!args.quiet && result.rays.discarded > std::max<uint64_t>(10, samples / 10000))
         std::fprintf(err, "pt: warning: %llu of %llu samples came out NaN or infinite and were dropped; the image is "
                           "darker than it should be where they fell\n",
@@ -707,9 +774,20 @@ int renderCommand(int argc, char** argv) {
     const RayCounts& r = result.rays;
     std::string clampNote =
         args.settings.clamp > 0.0f ? ", " + std::to_string(r.clamped) + " clamped (--clamp biases the image)" : "";
-    std::printf("pt: %dx%d, %u spp, %.3f s render (load %.3f s, bvh %.3f s), %.2f Mrays/s "
+    // Pixels of an adaptive render hold different counts: the range, the mean and what stopped it.
+    char sppText[160];
+    if (film.maxSamples() == film.minSamples()) std::snprintf(sppText, sizeof sppText, "%u spp", film.minSamples());
+    else
+        std::snprintf(sppText, sizeof sppText, "%u to %u spp (mean %.1f)", film.minSamples(), film.maxSamples(),
+                      film.meanSamples());
+    std::string stopNote;
+    if (film.hasConvergence())
+        stopNote += ", " + std::to_string(film.convergedCount()) + " of " + std::to_string(uint64_t(window.width()) * window.height()) +
+                    " pixels converged";
+    if (result.outOfTime) stopNote += ", stopped by --time";
+    std::printf("pt: %dx%d, %s%s, %.3f s render (load %.3f s, bvh %.3f s), %.2f Mrays/s "
                 "(camera %.2fM, continuation %.2fM, shadow %.2fM), %llu discarded samples%s, %d threads -> %s\n",
-                window.width(), window.height(), result.film.minSamples(), result.seconds, loadSeconds, bvhSeconds,
+                window.width(), window.height(), sppText, stopNote.c_str(), result.seconds, loadSeconds, bvhSeconds,
                 double(r.total()) / result.seconds * 1e-6, r.camera * 1e-6, r.continuation * 1e-6, r.shadow * 1e-6,
                 (unsigned long long)r.discarded, clampNote.c_str(), threads, args.output.c_str());
     return 0;

@@ -38,6 +38,21 @@ expect 2 "unknown extension \".tiff\"" "$pt" render "$scene" -o "$tmp/out.tiff"
 expect 2 "does not exist" "$pt" render "$scene" -o "$tmp/no/such/dir/out.exr"
 expect 2 "--aov needs an .exr output" "$pt" render "$scene" --aov variance -o "$tmp/out.png"
 expect 2 "no such camera" "$pt" render "$scene" --camera Nowhere -o "$tmp/out.exr"
+# Time budgets and adaptive sampling: each bad value a usage error, with nothing written.
+expect 2 "option --time: expected a time in seconds above 0, got 0" "$pt" render "$scene" --time 0 -o "$tmp/out.exr"
+expect 2 "option --time: -1 is out of range" "$pt" render "$scene" --time -1 -o "$tmp/out.exr"
+expect 2 "option --time: expected a finite number, got \"nan\"" "$pt" render "$scene" --time nan -o "$tmp/out.exr"
+expect 2 "option --time: 4e7 is out of range [0, 3.1536e+07]" "$pt" render "$scene" --time 4e7 -o "$tmp/out.exr"
+expect 2 "option --noise: expected a relative error between 0 and 1 (exclusive), such as 0.02, got 0" "$pt" render "$scene" --noise 0 -o "$tmp/out.exr"
+expect 2 "option --noise: expected a relative error between 0 and 1 (exclusive), such as 0.02, got 1" "$pt" render "$scene" --noise 1 -o "$tmp/out.exr"
+expect 2 "option --noise: 2 is out of range [0, 1]" "$pt" render "$scene" --noise 2 -o "$tmp/out.exr"
+expect 2 "option --noise: expected a finite number" "$pt" render "$scene" --noise inf -o "$tmp/out.exr"
+expect 2 "--min-spp 64 is above -spp 32" "$pt" render "$scene" --noise 0.02 --min-spp 64 -spp 32 -o "$tmp/out.exr"
+expect 2 "--min-spp needs --noise" "$pt" render "$scene" --min-spp 4 -o "$tmp/out.exr"
+expect 2 "--noise decides per pixel from all of its samples" "$pt" render "$scene" --noise 0.02 --samples 0:8 -o "$tmp/out.exr"
+expect 2 "unknown layer \"sp\"; known: variance, albedo, normal, depth, spp" "$pt" render "$scene" --aov sp -o "$tmp/out.exr"
+expect 0 "--noise E" "$pt" render --help
+expect 0 "--time SECONDS" "$pt" render --help
 expect 1 "cannot open" "$pt" render "$tmp/missing.obj" -o "$tmp/out.exr"
 [[ -e "$tmp/out.exr" ]] && { echo "FAIL: a failed render left $tmp/out.exr"; failures=$((failures + 1)); }
 

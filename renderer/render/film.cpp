@@ -9,6 +9,20 @@ uint32_t Film::minSamples() const {
     return count_.empty() ? 0 : *std::min_element(count_.begin(), count_.end());
 }
 
+uint32_t Film::maxSamples() const {
+    return count_.empty() ? 0 : *std::max_element(count_.begin(), count_.end());
+}
+
+double Film::meanSamples() const {
+    double total = 0.0;
+    for (uint32_t c : count_) total += c;
+    return count_.empty() ? 0.0 : total / double(count_.size());
+}
+
+size_t Film::convergedCount() const { return size_t(std::count(converged_.begin(), converged_.end(), uint8_t(1))); }
+
+std::vector<float> Film::samples() const { return std::vector<float>(count_.begin(), count_.end()); }
+
 std::vector<float> Film::mean() const {
     std::vector<float> out(sum_.size() * 3, 0.0f);
     for (size_t i = 0; i < sum_.size(); ++i)

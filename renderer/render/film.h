@@ -19,8 +19,10 @@ public:
 
     int width() const { return width_; }
     int height() const { return height_; }
-    // Fewest samples any pixel holds.
+    // Fewest and most samples any pixel holds, and their mean.
     uint32_t minSamples() const;
+    uint32_t maxSamples() const;
+    double meanSamples() const;
 
     void add(size_t pixel, const glm::dvec3& sum, const glm::dvec3& sumSq, uint32_t n) {
         count_[pixel] += n;
@@ -59,6 +61,17 @@ public:
     // Interleaved RGB float images of the mean and of its variance (sample variance / n).
     std::vector<float> mean() const;
     std::vector<float> varianceOfMean() const;
+    std::vector<float> samples() const; // each pixel's count, as float (exact below 2^24)
+
+    // Adaptive sampling (render/convergence.h): which pixels have stopped, and the sample count
+    // of the pass boundary at which that was last decided (a resumed render decides from there
+    // on, so that it stops the pixels an uninterrupted one would). Empty unless enabled.
+    void enableConvergence() { converged_.assign(count_.size(), 0); }
+    bool hasConvergence() const { return !converged_.empty(); }
+    bool converged(size_t pixel) const { return !converged_.empty() && converged_[pixel] != 0; }
+    void setConverged(size_t pixel) { converged_[pixel] = 1; }
+    size_t convergedCount() const;
+    uint32_t decidedAt = 0;
 
 private:
     int width_, height_;
@@ -67,6 +80,7 @@ private:
     std::vector<glm::dvec3> albedo_, normal_;
     std::vector<double> depth_;
     std::vector<uint32_t> hits_;
+    std::vector<uint8_t> converged_;
 };
 
 } // namespace pt

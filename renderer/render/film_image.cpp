@@ -29,6 +29,7 @@ Image filmImage(const Film& film, const AovSelection& aovs, double exposure, siz
     if (aovs.albedo) image.layers.push_back({"albedo", {"R", "G", "B"}, film.albedo()});
     if (aovs.normal) image.layers.push_back({"normal", {"X", "Y", "Z"}, film.normal()});
     if (aovs.depth) image.layers.push_back({"depth", {"Z"}, film.depth()});
+    if (aovs.spp) image.layers.push_back({"spp", {"Z"}, film.samples()});
     return image;
 }
 

@@ -11,9 +11,9 @@ namespace pt {
 
 // Which extra layers an image carries (pt render --aov).
 struct AovSelection {
-    bool variance = false, albedo = false, normal = false, depth = false;
+    bool variance = false, albedo = false, normal = false, depth = false, spp = false;
     bool firstHit() const { return albedo || normal || depth; } // layers the film must gather
-    bool any() const { return variance || firstHit(); }
+    bool any() const { return variance || spp || firstHit(); }
 };
 
 // The film's mean as RGB times 2^exposure (its variance by the square), with the AOVs asked for;

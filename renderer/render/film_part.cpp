@@ -21,7 +21,7 @@ struct PartLayer {
 };
 const PartLayer kSum{"ptSum", {"R", "G", "B"}}, kSumSq{"ptSumSq", {"R", "G", "B"}}, kCount{"ptCount", {"N"}},
     kAlbedo{"ptAlbedo", {"R", "G", "B"}}, kNormal{"ptNormal", {"X", "Y", "Z"}}, kDepth{"ptDepth", {"Z"}},
-    kHits{"ptHits", {"N"}};
+    kHits{"ptHits", {"N"}}, kConverged{"ptConverged", {"N"}};
 
 // Adds layer NAME and NAMELo holding value(pixel, channel) split in two.
 template <typename Get>
@@ -92,6 +92,12 @@ void addPartLayers(Image& image, const Film& film) {
     image.layers.push_back(std::move(count));
     addSplit(image, kSum, n, [&](size_t p, size_t c) { return film.sum(p)[int(c)]; });
     addSplit(image, kSumSq, n, [&](size_t p, size_t c) { return film.sumSq(p)[int(c)]; });
+    if (film.hasConvergence()) { // adaptive sampling's state, for --resume
+        ImageLayer converged{kConverged.name, kConverged.channels, std::vector<float>(n)};
+        for (size_t p = 0; p < n; ++p) converged.pixels[p] = film.converged(p) ? 1.0f : 0.0f;
+        image.layers.push_back(std::move(converged));
+        image.metadata.push_back(ImageAttribute::integerValue("pt:decidedAt", film.decidedAt));
+    }
     if (!film.hasFirstHitLayers()) return;
     addSplit(image, kAlbedo, n, [&](size_t p, size_t c) { return film.albedoSum(p)[int(c)]; });
     addSplit(image, kNormal, n, [&](size_t p, size_t c) { return film.normalSum(p)[int(c)]; });
@@ -153,6 +159,13 @@ std::string partFromImage(const Image& image, const std::string& name, Film& fil
     bool layers = both(kAlbedo, albedo, albedoLo) && both(kNormal, normal, normalLo) && both(kDepth, depth, depthLo) && hits;
     film = Film(image.width, image.height);
     if (layers) film.enableFirstHitLayers();
+    const ImageLayer* converged = find(image, kConverged.name, 1, n);
+    long long decidedAt = 0;
+    if (converged) {
+        if (error = integerField(image, "pt:decidedAt", 0, last - first, decidedAt); !error.empty()) return fail(error);
+        film.enableConvergence();
+        film.decidedAt = uint32_t(decidedAt);
+    }
 
     // Each pixel's sums must be those of its count of samples: radiance is never negative, a
     // pixel without samples has nothing, and the sum of squares is at least the square of the sum
@@ -176,6 +189,13 @@ std::string partFromImage(const Image& image, const std::string& name, Film& fil
                 return fail(pixel() + ": its sums (" + shortNumber(s[k]) + ", of squares " + shortNumber(q[k]) +
                             ") cannot be those of " + shortNumber(c) + " samples of radiance");
         film.add(p, s, q, uint32_t(c));
+        if (converged) {
+            float v = converged->pixels[p];
+            if (!(v == 0.0f || (v == 1.0f && c <= double(decidedAt))))
+                return fail(pixel() + ": its ptConverged is " + shortNumber(v) + "; expected 0, or 1 for a pixel of at most "
+                            "pt:decidedAt (" + std::to_string(decidedAt) + ") samples");
+            if (v == 1.0f) film.setConverged(p);
+        }
         if (!layers) continue;
         glm::dvec3 a, nm;
         for (int k = 0; k < 3; ++k) a[k] = value(albedo, albedoLo, 3 * p + k), nm[k] = value(normal, normalLo, 3 * p + k);

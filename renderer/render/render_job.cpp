@@ -11,7 +11,7 @@ const std::vector<std::string>& jobFields() {
         "pt:version",   "pt:sceneHash",   "pt:fullWidth",   "pt:fullHeight",  "pt:camera",     "pt:cameraIndex", "pt:sppRequested",
         "pt:seed",      "pt:maxDepth",    "pt:sampler",     "pt:lightSampling", "pt:lightChoice", "pt:hemisphere",
         "pt:clamp",     "pt:exposure",    "pt:envRotate",   "pt:envScale",    "pt:environment", "pt:sunDirection",
-        "pt:turbidity", "pt:skyScale",
+        "pt:turbidity", "pt:skyScale",    "pt:noise",       "pt:minSpp",
     };
     return fields;
 }

@@ -1,5 +1,7 @@
 #include "render/renderer.h"
 
+#include "render/convergence.h"
+
 #include <tbb/combinable.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -157,41 +159,100 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
     return total;
 }
 
+namespace {
+
+// The size of the pass after `done` samples of the range. Passes of 1, 1, 2, 4, ... samples, at
+// most maxPass: a cancel request stops the render within one pass of a tile, and the film counts
+// samples per pixel, so what was done stays usable. Adaptive sampling puts a boundary at minSpp,
+// where pixels may first stop, and after it passes of a quarter of what a pixel holds, so that a
+// pixel stops soon after its noise reaches the target.
+uint32_t passSize(uint32_t done, uint32_t maxPass, const SampleBudget& budget) {
+    if (!budget.adaptive() || done < budget.minSpp)
+        return budget.adaptive() ? std::min(std::clamp(done, 1u, maxPass), budget.minSpp - done) : std::clamp(done, 1u, maxPass);
+    return std::clamp(done / 4, 1u, maxPass);
+}
+
+} // namespace
+
 RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
                          uint32_t spp, int threads, const RenderSettings& settings, RenderProgress* progress,
-                         bool firstHitLayers, const RenderRange& range) {
+                         bool firstHitLayers, const RenderRange& range, const SampleBudget& budgetAsked) {
     Renderer renderer(scene, accel, camera, width, height, settings, spp, range.window);
     const PixelWindow& window = renderer.window();
     RenderResult result{Film(window.width(), window.height()), {}};
-    if (firstHitLayers) result.film.enableFirstHitLayers();
+    Film& film = result.film;
+    if (firstHitLayers) film.enableFirstHitLayers();
     const uint32_t begin = range.first, end = range.last > 0 ? range.last : spp;
+    SampleBudget budget = budgetAsked;
+    budget.minSpp = std::clamp(budget.minSpp, 1u, end - begin);
+    if (budget.adaptive()) film.enableConvergence();
+    // The first sample index of each pixel still sampling, kNever for one that has stopped.
     // A resumed part's samples are kept; each pixel goes on from where it stopped.
+    constexpr uint32_t kNever = ~0u;
+    const size_t pixels = size_t(window.width()) * window.height();
     std::vector<uint32_t> startAt;
+    if (range.resume || budget.adaptive()) startAt.assign(pixels, begin);
     if (range.resume) {
-        startAt.resize(size_t(window.width()) * window.height());
-        for (size_t p = 0; p < startAt.size(); ++p) {
-            result.film.addPixel(p, *range.resume, p);
-            startAt[p] = begin + range.resume->count(p);
+        const Film& part = *range.resume;
+        for (size_t p = 0; p < pixels; ++p) {
+            film.addPixel(p, part, p);
+            startAt[p] = begin + part.count(p);
+        }
+        if (budget.adaptive() && part.hasConvergence()) {
+            for (size_t p = 0; p < pixels; ++p)
+                if (part.converged(p)) film.setConverged(p), startAt[p] = kNever;
+            film.decidedAt = part.decidedAt;
         }
     }
-    // Passes of 1, 1, 2, 4, ... samples, at most spp / 32: a cancel request stops the render within
-    // one pass of a tile, and the film counts samples per pixel, so what was done stays usable.
     const uint32_t maxPass = std::max<uint32_t>(1, (end - begin) / 32);
-    if (progress) progress->total = uint64_t(end - begin) * renderer.tileCount();
+    if (progress) {
+        progress->total = uint64_t(end - begin) * renderer.tileCount();
+        progress->pixels = pixels;
+        progress->converged = film.convergedCount();
+    }
 
     tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
     auto start = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     arena.execute([&] {
+        double secondsPerPixelSample = 0.0; // of the last pass, for the time budget
         for (uint32_t first = begin; first < end;) {
             if (progress && progress->cancel.load()) break;
-            uint32_t last = std::min(end, first + std::clamp(first - begin, 1u, maxPass));
-            result.rays += renderer.renderSamples(result.film, first, last, progress, range.resume ? &startAt : nullptr);
+            size_t sampling = pixels;
+            if (!startAt.empty()) sampling = size_t(std::count_if(startAt.begin(), startAt.end(), [&](uint32_t s) { return s < end; }));
+            if (sampling == 0) break; // every pixel has converged (or holds the whole range)
+            uint32_t size = std::min(end - first, passSize(first - begin, maxPass, budget));
+            if (budget.seconds > 0.0 && secondsPerPixelSample > 0.0) {
+                // Only whole passes: as many samples as the last pass's pace fits into what is left.
+                double fits = (budget.seconds - elapsed()) / (secondsPerPixelSample * double(sampling));
+                if (!(fits >= 1.0)) {
+                    result.outOfTime = true;
+                    break;
+                }
+                size = uint32_t(std::min(double(size), std::floor(fits)));
+            }
+            const uint32_t last = first + size;
+            double work = double(pixels) * size; // pixel-samples this pass renders
+            if (!startAt.empty()) {
+                work = 0.0;
+                for (uint32_t s : startAt) work += s < last ? double(last - std::max(first, s)) : 0.0;
+            }
+            const double passStart = elapsed();
+            result.rays += renderer.renderSamples(film, first, last, progress, startAt.empty() ? nullptr : &startAt);
+            if (work > 0.0) secondsPerPixelSample = std::max(1e-12, (elapsed() - passStart) / work);
             first = last;
-            if (progress && !progress->cancel.load()) progress->samplesComplete.store(last - begin);
+            if (progress && progress->cancel.load()) break;
+            if (budget.adaptive() && last - begin > film.decidedAt) {
+                markConverged(film, budget, last - begin);
+                for (size_t p = 0; p < pixels; ++p)
+                    if (film.converged(p)) startAt[p] = kNever;
+                if (progress) progress->converged = film.convergedCount();
+            }
+            if (progress) progress->samplesComplete.store(last - begin);
         }
         if (progress && progress->cancel.load()) result.cancelled = true;
     });
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.seconds = elapsed();
     return result;
 }
 

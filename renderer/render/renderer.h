@@ -9,6 +9,7 @@
 #include "render/path_tracer.h"
 #include "render/pinhole_camera.h"
 #include "render/render_settings.h"
+#include "render/sample_budget.h"
 
 #include <atomic>
 
@@ -20,7 +21,9 @@ struct RenderProgress {
     std::atomic<uint64_t> done{0};
     uint64_t total = 0;
     std::atomic<bool> cancel{false};
-    std::atomic<uint32_t> samplesComplete{0}; // samples every pixel holds, after each full pass
+    std::atomic<uint32_t> samplesComplete{0}; // samples every pixel still sampling holds, after each full pass
+    std::atomic<uint64_t> converged{0};       // pixels adaptive sampling has stopped
+    uint64_t pixels = 0;
 };
 
 // A rectangle of pixels [x0, x1) x [y0, y1) of the full image, row 0 at the top.
@@ -74,6 +77,7 @@ struct RenderResult {
     RayCounts rays;
     double seconds = 0.0; // wall-clock time of rendering, excluding scene load and BVH build
     bool cancelled = false;
+    bool outOfTime = false; // stopped by the budget's seconds before the cap (or convergence)
 };
 
 // What share of a job to render: samples [first, last) (last 0: all spp) of the pixels in
@@ -91,8 +95,12 @@ struct RenderRange {
 // samples it traced in complete passes over the whole image.
 // `firstHitLayers` also accumulates the albedo, normal and depth layers. The film covers
 // `range.window`.
+// `budget` may stop it earlier: at the last pass boundary its seconds allow (the first pass is
+// always rendered, so every pixel has a sample), and pixel by pixel at the pass boundaries where
+// a pixel's noise falls below its target (each pixel keeps samples 0, 1, ... n-1 of the range).
 RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& camera, int width, int height,
                          uint32_t spp, int threads, const RenderSettings& settings,
-                         RenderProgress* progress = nullptr, bool firstHitLayers = false, const RenderRange& range = {});
+                         RenderProgress* progress = nullptr, bool firstHitLayers = false, const RenderRange& range = {},
+                         const SampleBudget& budget = {});
 
 } // namespace pt
