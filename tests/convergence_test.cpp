@@ -42,7 +42,7 @@ TEST(Convergence, FewerThanTwoSamplesIsNeverConverged) {
 TEST(Convergence, AQuietPixelBesideANoisyOneKeepsSampling) {
     // The centre's own samples are all equal (variance 0), its right neighbour's are not: the
     // pooled variance keeps the centre going; its left neighbour, two pixels from the noise, stops.
-    // (Relative error of pixel 1: sqrt(mean(0, 0, 16/15) / 16) / 1 = 0.15 > 0.05.)
+    // (Relative error of pixel 1: sqrt(max(0, 0, 16/15) / 16) / 1 = 0.26 > 0.05.)
     Film film(3, 1);
     film.enableConvergence();
     addSamples(film, 0, 16, 1.0, 1.0);

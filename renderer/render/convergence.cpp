@@ -35,18 +35,15 @@ double relativeError(const Film& film, int x, int y, float darkFloor) {
     const PixelStats own = statsOf(film, p);
     if (own.variance < 0.0) return std::numeric_limits<double>::infinity();
     double pooled = 0.0;
-    int count = 0;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
             const int nx = x + dx, ny = y + dy;
             if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
             const PixelStats s = statsOf(film, size_t(ny) * size_t(w) + size_t(nx));
             if (s.variance < 0.0) continue;
-            pooled += s.variance;
-            ++count;
+            pooled = std::max(pooled, s.variance);
         }
-    const double variance = std::max(own.variance, pooled / count);
-    return std::sqrt(variance / double(film.count(p))) / (own.mean + double(darkFloor));
+    return std::sqrt(pooled / double(film.count(p))) / (own.mean + double(darkFloor));
 }
 
 size_t markConverged(Film& film, const SampleBudget& budget, uint32_t samples) {

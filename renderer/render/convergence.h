@@ -4,9 +4,12 @@
 // A pixel's error is the standard error of its mean relative to its brightness,
 //   E = sqrt(s2 / n) / (mean + darkFloor),
 // with mean and the sample variance s2 averaged over R, G and B. One pixel's own s2 is a poor
-// estimate after a few samples (zero until the first firefly lands), so s2 is the larger of the
-// pixel's own and the mean over its 3x3 neighbourhood: a pixel stops only when it and its
-// neighbours look converged.
+// estimate after a few samples (zero until the first firefly lands), and a pixel that stops on
+// an estimate that came out low keeps a mean that is low too (the bias of stopping on one's own
+// estimate). So s2 is the largest over the pixel's 3x3 neighbourhood: a pixel stops only when
+// none of its neighbours has seen a firefly either. Against the mean over the neighbourhood
+// (with the pixel's own), this cut the stopping bias on scenes/glass at E = 0.2 from -0.98 % to
+// -0.13 % (bench/tools/adaptive_equal_time.py).
 #pragma once
 
 #include "render/film.h"
