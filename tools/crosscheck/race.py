@@ -17,6 +17,10 @@ For unbiased renderers error falls as 1 / time, so error x seconds is one number
 its mean over the sample counts from 8 spp on gives the equal-time error ratio, steadier than
 reading two noisy curves at one time.
 
+With --pt-noise C, pt also races with adaptive sampling: at N spp it renders with --noise
+C/sqrt(N), the target falling as the uniform error does, and --min-spp min(16, N); its error x
+seconds is reported beside the others (issue 27).
+
 Writes bench/charts/race_NAME.csv and .png (error against seconds, both renderers) and prints
 seconds per sample and the equal-time error ratio. Run it with tools/crosscheck/race, which
 installs Mitsuba into the crosscheck's virtual environment.
@@ -44,10 +48,17 @@ def relative_mse(x, ref):
     return float(np.mean((x - ref) ** 2 / (ref * ref + 0.01)))
 
 
-def render_pt(a, spp, seed, tmp):
+def adaptive_args(a, spp):
+    """pt's adaptive sampling for a race at `spp`: the noise target falls as 1 / sqrt(spp), as the
+    uniform error does, so that at every sample count the pixels quieter than --pt-noise's
+    relative spread per sample stop early and the others go on to the cap."""
+    return ["--noise", f"{min(0.99, a.pt_noise / spp ** 0.5):.6g}", "--min-spp", str(min(16, spp))]
+
+
+def render_pt(a, spp, seed, tmp, adaptive=False):
     out = os.path.join(tmp, "pt.exr")
     cmd = [a.pt, "render", a.scene, "--camera", str(a.camera), "--res", a.res, "-spp", str(spp),
-           "--seed", str(seed), "-o", out] + a.pt_args
+           "--seed", str(seed), "-o", out] + a.pt_args + (adaptive_args(a, spp) if adaptive else [])
     text = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
     seconds = float(re.search(r"([0-9.]+) s render", text).group(1))
     return read_channels(out, RGB), seconds
@@ -80,9 +91,12 @@ def plot(rows, title, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(7.5, 5))
-    for name, style in (("pt", "o-"), ("mitsuba", "s-")):
+    for name, style in (("pt", "o-"), ("mitsuba", "s-"), ("pt adaptive", "^-")):
         pts = [(r["seconds"], r["rel_mse"]) for r in rows if r["renderer"] == name]
-        label = "pt" if name == "pt" else f"Mitsuba {mi.__version__} LLVM path tracer"
+        if not pts:
+            continue
+        label = {"pt": "pt", "pt adaptive": "pt --noise (target falling as 1/sqrt(spp))"}.get(
+            name, f"Mitsuba {mi.__version__} LLVM path tracer")
         ax.loglog([p[0] for p in pts], [p[1] for p in pts], style, label=label, markersize=4)
     ax.set_title(f"{title}: error against render time")
     ax.set_xlabel("seconds (2 threads)")
@@ -107,6 +121,8 @@ def main():
     ap.add_argument("--pt", default="build/pt")
     ap.add_argument("--out-dir", default="bench/charts")
     ap.add_argument("--pt-normals", action="store_true", help="as for mitsuba_lab.py (cornellbottle2)")
+    ap.add_argument("--pt-noise", type=float, default=0.0,
+                    help="also race pt with adaptive sampling, --noise C/sqrt(spp) at each spp (C: this value)")
     ap.add_argument("--env")
     ap.add_argument("--env-rotate", type=float, default=0.0)
     ap.add_argument("--sky", action="store_true")
@@ -141,11 +157,14 @@ def main():
             while spp <= a.max_spp:
                 repeats = max(2, a.budget // spp)
                 render_mitsuba(scene, spp, 999)  # compiles (or finds) the kernel for this size
-                for renderer in ("pt", "mitsuba"):
+                for renderer in ("pt", "mitsuba") + (("pt adaptive",) if a.pt_noise > 0 else ()):
                     errors, seconds = [], []
                     for k in range(repeats):
                         seed = 1 + k
-                        img, s = render_pt(a, spp, seed, tmp) if renderer == "pt" else render_mitsuba(scene, spp, seed)
+                        if renderer == "mitsuba":
+                            img, s = render_mitsuba(scene, spp, seed)
+                        else:
+                            img, s = render_pt(a, spp, seed, tmp, renderer == "pt adaptive")
                         errors.append(relative_mse(img, ref))
                         seconds.append(s)
                     rows.append({"renderer": renderer, "spp": spp, "seconds": float(np.median(seconds)),
@@ -174,6 +193,10 @@ def main():
           f"at equal spp (16 on) Mitsuba's error is {per_sample:.2f}x pt's; "
           f"error x seconds pt {w_pt:.4g}, Mitsuba {w_mi:.4g}: at equal time Mitsuba's error is {w_mi / w_pt:.2f}x pt's"
           f"  ({csv_path})")
+    if any(r["renderer"] == "pt adaptive" for r in rows):
+        w_ad = work("pt adaptive")
+        print(f"{name}: pt adaptive: error x seconds {w_ad:.4g}: at equal time Mitsuba's error is {w_mi / w_ad:.2f}x, "
+              f"uniform pt's {w_pt / w_ad:.2f}x adaptive pt's")
 
 
 if __name__ == "__main__":
