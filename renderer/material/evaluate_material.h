@@ -26,8 +26,10 @@ inline LabParameters labParameters(const Material& m, const SurfaceInputs& in) {
 
 // Step 2, glTF model: textures multiply factors; roughness = factor * G, so alpha = factor^2 G^2.
 inline MetalRoughParameters metalRoughParameters(const Material& m, const SurfaceInputs& in) {
-    return MetalRoughParameters{m.kd * in.kd, std::max(0.0f, m.metallic) * in.metallic, m.roughness * sqr(in.roughness),
-                                m.eta, m.ks, m.specular};
+    return MetalRoughParameters{m.kd * in.kd,  std::max(0.0f, m.metallic) * in.metallic, m.roughness * sqr(in.roughness),
+                                m.eta,         m.ks,
+                                m.specular,    m.clearcoat * in.clearcoat,
+                                m.clearcoatAlpha * sqr(in.clearcoatRoughness)};
 }
 
 // KHR_materials_transmission: the lab tree's FresnelBlend over refraction (with the ior) and
@@ -47,15 +49,20 @@ inline ShadingPoint evaluateMaterial(const Material& m, const TextureCache& text
     Vec3 n = in.normal;
     ShadingPoint s;
     if (m.model == MaterialModel::MetalRough) {
-        const MetalRoughParameters p = metalRoughParameters(m, in);
+        MetalRoughParameters p = metalRoughParameters(m, in);
         // Opaque surfaces are two-sided: the frame turns to the side wo arrives from. A
         // transmitting one keeps the outside, which refraction needs.
         const bool transmits = m.transparency > 0.0f;
-        if (!transmits && glm::dot(wo, n) < 0.0f) n = -n;
+        const bool flip = !transmits && glm::dot(wo, n) < 0.0f;
+        if (flip) n = -n;
         s.frame = Frame(n);
         s.wo = s.frame.toLocal(wo);
+        if (p.clearcoat > 0.0f) { // the coat's normal in the frame, turned with it
+            p.clearcoatNormal = s.frame.toLocal(flip ? -in.clearcoatNormal : in.clearcoatNormal);
+            if (!(p.clearcoatNormal.z > 0.0f)) p.clearcoatNormal = Vec3(0.0f, 0.0f, 1.0f);
+        }
         if (transmits) s.bsdf = LabBsdf::make(transmissionParameters(m, p), s.wo.z, hemisphere);
-        else s.bsdf = MetalRoughBsdf::make(p, s.wo.z);
+        else s.bsdf = MetalRoughBsdf::make(p, s.wo);
         return s;
     }
     s.frame = Frame(n);

@@ -13,24 +13,34 @@ inline float schlickWeight(float cosTheta) {
 
 } // namespace
 
-MetalRoughBsdf MetalRoughBsdf::make(const MetalRoughParameters& p, float cosThetaO) {
+// The clear coat's Fresnel: Schlick's with F0 = 0.04 (ior 1.5), as the extension fixes it.
+inline float coatFresnel(float cosTheta) { return 0.04f + 0.96f * schlickWeight(std::abs(cosTheta)); }
+
+MetalRoughBsdf MetalRoughBsdf::make(const MetalRoughParameters& p, const Vec3& wo) {
     MetalRoughBsdf b;
+    const float cosThetaO = wo.z;
     const Spectrum& baseColor = p.baseColor;
     b.baseColor = baseColor;
     b.metallic = std::clamp(p.metallic, 0.0f, 1.0f);
     b.alpha = p.alpha > kSmoothAlpha ? p.alpha : 0.0f;
     b.f0 = glm::min(sqr((p.ior - 1.0f) / (p.ior + 1.0f)) * p.specularColor, Spectrum(1.0f));
     b.specular = std::clamp(p.specular, 0.0f, 1.0f);
+    if (p.clearcoat > 0.0f) {
+        b.coatNormal = p.clearcoatNormal;
+        b.coatAlpha = p.clearcoatAlpha > kSmoothAlpha ? p.clearcoatAlpha : 0.0f;
+        b.coat = std::clamp(p.clearcoat, 0.0f, 1.0f) * coatFresnel(glm::dot(wo, b.coatNormal));
+    }
     // Lobe weights at wo, with Fresnel at the normal: the sampling estimate of each lobe's share.
     float w = schlickWeight(cosThetaO);
     Spectrum fd = b.f0 + (Spectrum(1.0f) - b.f0) * w;
     Spectrum fm = baseColor + (Spectrum(1.0f) - baseColor) * w;
-    float specular = (1.0f - b.metallic) * b.specular * average(fd) + b.metallic * average(fm);
-    float diffuse = (1.0f - b.metallic) * (1.0f - b.specular * maxComponent(fd)) * average(baseColor);
-    float sum = specular + diffuse;
+    float specular = (1.0f - b.coat) * ((1.0f - b.metallic) * b.specular * average(fd) + b.metallic * average(fm));
+    float diffuse = (1.0f - b.coat) * (1.0f - b.metallic) * (1.0f - b.specular * maxComponent(fd)) * average(baseColor);
+    float sum = specular + diffuse + b.coat;
     if (cosThetaO > 0.0f && sum > 0.0f) {
         b.pSpecular = specular / sum;
         b.pDiffuse = diffuse / sum;
+        b.pCoat = b.coat / sum;
     }
     return b;
 }
@@ -42,31 +52,58 @@ Spectrum MetalRoughBsdf::evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) con
     float vh = glm::dot(wo, h);
     float w = schlickWeight(vh);
     Spectrum fd = f0 + (Spectrum(1.0f) - f0) * w;
-    Spectrum f = ((1.0f - metallic) * (1.0f - specular * maxComponent(fd)) * kInvPi * wi.z) * baseColor;
+    const float base = 1.0f - coat;
+    Spectrum f = (base * (1.0f - metallic) * (1.0f - specular * maxComponent(fd)) * kInvPi * wi.z) * baseColor;
     pdf = pDiffuse * wi.z * kInvPi;
     if (!smooth() && h.z > 0.0f) {
         Spectrum fm = baseColor + (Spectrum(1.0f) - baseColor) * w;
         // S |cos theta_i| = D G2 / (4 cos theta_o).
         float s = ggxD(h, alpha) * smithG2HeightCorrelated(wo, wi, h, alpha) / (4.0f * wo.z);
-        f += s * ((1.0f - metallic) * specular * fd + metallic * fm);
+        f += (base * s) * ((1.0f - metallic) * specular * fd + metallic * fm);
         pdf += pSpecular * visibleNormalPdf(wo, h, alpha) * reflectionJacobian(wi, h);
+    }
+    if (pCoat > 0.0f && !coatSmooth()) {
+        // In the coat's frame: C |cos theta_i| = D G2 |n.l| / (4 |nc.v| |nc.l|), n the shading normal.
+        const Frame frame(coatNormal);
+        const Vec3 o = frame.toLocal(wo), i = frame.toLocal(wi), hc = frame.toLocal(h);
+        if (o.z > 0.0f && i.z > 0.0f && hc.z > 0.0f) {
+            float c = ggxD(hc, coatAlpha) * smithG2HeightCorrelated(o, i, hc, coatAlpha) * wi.z / (4.0f * o.z * i.z);
+            f += Spectrum(coat * c);
+            pdf += pCoat * visibleNormalPdf(o, hc, coatAlpha) * reflectionJacobian(i, hc);
+        }
     }
     return f;
 }
 
 bool MetalRoughBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
     if (wo.z <= 0.0f || isBlack()) return false;
-    if (u1 < pSpecular) {
+    out.radianceScale = 1.0f;
+    if (u1 < pCoat) {
+        if (coatSmooth()) { // the mirror about the coat's normal
+            out.wi = 2.0f * glm::dot(wo, coatNormal) * coatNormal - wo;
+            if (out.wi.z <= 0.0f) return false;
+            out.weight = Spectrum(coat / pCoat);
+            out.pdf = 0.0f;
+            out.delta = true;
+            return true;
+        }
+        const Frame frame(coatNormal);
+        const Vec3 o = frame.toLocal(wo);
+        if (o.z <= 0.0f) return false;
+        Vec3 m = sampleVisibleNormal(o, coatAlpha, u2);
+        Vec3 i = 2.0f * glm::dot(o, m) * m - o;
+        if (i.z <= 0.0f) return false; // below the coat: evalPdf gives the coat no density there
+        out.wi = frame.toWorld(i);
+    } else if (u1 < pCoat + pSpecular) {
         if (smooth()) {
             // The mirror, with Fresnel at the normal (h = n).
             float w = schlickWeight(wo.z);
             Spectrum fm = baseColor + (Spectrum(1.0f) - baseColor) * w;
             Spectrum lobe = (1.0f - metallic) * specular * (f0 + (Spectrum(1.0f) - f0) * w) + metallic * fm;
             out.wi = Vec3(-wo.x, -wo.y, wo.z);
-            out.weight = lobe / pSpecular;
+            out.weight = lobe * ((1.0f - coat) / pSpecular);
             out.pdf = 0.0f;
             out.delta = true;
-            out.radianceScale = 1.0f;
             return true;
         }
         Vec3 m = sampleVisibleNormal(wo, alpha, u2);
@@ -81,7 +118,6 @@ bool MetalRoughBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) 
     out.weight = f / pdf;
     out.pdf = pdf;
     out.delta = false;
-    out.radianceScale = 1.0f;
     return true;
 }
 

@@ -9,6 +9,16 @@
 // where s and specularColor are KHR_materials_specular's (1 and white without it: then F0 = 0.04
 // for ior 1.5 and the dielectric is the core specification's fresnel_mix).
 //
+// KHR_materials_clearcoat puts a coat over all of it, as the extension's fresnel_coat does:
+//
+//   coated = (1 - c Fc(v.nc)) f + c Fc(v.nc) C,   Fc = 0.04 + 0.96 (1 - |v.nc|)^5 (ior 1.5)
+//   C      = D(h) G2(v, l) / (4 |nc.v| |nc.l|),  GGX with the coat's own alpha, about the coat's
+//            own normal nc (its normal map, else the interpolated normal without the base's map)
+//
+// with c the clearcoat weight. Fc is taken at the view direction, so the coated BSDF is not
+// reciprocal (the extension defines it so). A smooth coat (alpha <= kSmoothAlpha) is a delta
+// mirror about nc.
+//
 // Fresnel is taken at the half vector, as the specification writes it; the specular lobe has no
 // multiple-scattering compensation, so rough metals lose energy as the lab's rough lobes do.
 // At alpha <= kSmoothAlpha the specular lobe is a delta mirror with Fresnel at the normal.
@@ -31,6 +41,9 @@ struct MetalRoughParameters {
     float ior = 1.5f;
     Spectrum specularColor{1.0f};      // KHR_materials_specular
     float specular = 1.0f;
+    float clearcoat = 0.0f;            // KHR_materials_clearcoat's weight c
+    float clearcoatAlpha = 0.0f;       // the coat's GGX alpha
+    Vec3 clearcoatNormal{0.0f, 0.0f, 1.0f}; // the coat's normal in the shading frame (z: the base's)
 };
 
 struct MetalRoughBsdf {
@@ -39,18 +52,28 @@ struct MetalRoughBsdf {
     float alpha = 0.0f; // 0: smooth (delta) specular lobe
     Spectrum f0{0.04f}; // dielectric reflectance at normal incidence
     float specular = 1.0f; // s, the dielectric's specular weight
-    float pSpecular = 0.0f, pDiffuse = 0.0f;
+    float coat = 0.0f;     // c Fc(v.nc): the share the clear coat takes, the rest (1 - coat) the base
+    float coatAlpha = 0.0f; // 0: smooth (delta) coat
+    Vec3 coatNormal{0.0f, 0.0f, 1.0f};
+    float pSpecular = 0.0f, pDiffuse = 0.0f, pCoat = 0.0f;
 
-    // The BRDF for outgoing direction cosThetaO = wo.z.
-    static MetalRoughBsdf make(const MetalRoughParameters& p, float cosThetaO);
+    // The BRDF for outgoing direction wo (local).
+    static MetalRoughBsdf make(const MetalRoughParameters& p, const Vec3& wo);
+    // Without a coat only wo's cosine matters.
+    static MetalRoughBsdf make(const MetalRoughParameters& p, float cosThetaO) {
+        return make(p, Vec3(std::sqrt(std::max(0.0f, 1.0f - cosThetaO * cosThetaO)), 0.0f, cosThetaO));
+    }
     static MetalRoughBsdf make(const Spectrum& baseColor, float metallic, float alpha, float ior, float cosThetaO,
                                const Spectrum& specularColor = Spectrum(1.0f), float specular = 1.0f) {
         return make(MetalRoughParameters{baseColor, metallic, alpha, ior, specularColor, specular}, cosThetaO);
     }
 
     bool smooth() const { return alpha <= 0.0f; }
-    bool hasNonDelta() const { return pDiffuse > 0.0f || (!smooth() && pSpecular > 0.0f); }
-    bool isBlack() const { return pSpecular + pDiffuse == 0.0f; }
+    bool coatSmooth() const { return coatAlpha <= 0.0f; }
+    bool hasNonDelta() const {
+        return pDiffuse > 0.0f || (!smooth() && pSpecular > 0.0f) || (!coatSmooth() && pCoat > 0.0f);
+    }
+    bool isBlack() const { return pSpecular + pDiffuse + pCoat == 0.0f; }
     // The colour of the surface, for the albedo AOV: diffuse for dielectrics, F0 for metals.
     Spectrum albedo() const { return baseColor; }
 

@@ -18,6 +18,9 @@ struct SurfaceInputs {
     Spectrum ks{1.0f};              // map_Ks
     float roughness = 1.0f;         // map_Pr / metallicRoughness G, in [0, 1] (perceptual: alpha = value^2)
     float metallic = 1.0f;          // map_Pm / metallicRoughness B, in [0, 1]
+    float clearcoat = 1.0f;         // clearcoatTexture R
+    float clearcoatRoughness = 1.0f; // clearcoatRoughnessTexture G (perceptual)
+    Vec3 clearcoatNormal{0.0f};     // the coat's normal (its own map, else the interpolated one); set where clearcoat > 0
 };
 
 // Radiance a material emits at texture coordinates uv: Ke, times its emission texture (glTF).
@@ -26,19 +29,31 @@ inline Spectrum emittedRadiance(const Material& m, const TextureCache& textures,
     return m.emission * textures.color(m.emissionMap, uv, footprint);
 }
 
-// The shading normal after a normal map (tangent space, y along increasing v) or a bump map
-// (the surface displaced along n by -bm * height).
+// The interpolated normal after a tangent-space normal map (y along increasing v), unnormalized.
+inline Vec3 normalFromMap(const TextureMap& map, const TextureCache& textures, const SurfacePoint& sp) {
+    const Vec3 n = sp.ns;
+    Vec3 c = 2.0f * textures.vector(map, sp.uv, sp.footprint) - Vec3(1.0f);
+    Vec3 t = sp.tangent;
+    if (t == Vec3(0.0f)) t = safeNormalize(sp.dpdu - n * glm::dot(n, sp.dpdu));
+    if (t == Vec3(0.0f)) t = Frame(n).s; // no uv direction at all: the map's x and y are arbitrary
+    Vec3 b = sp.bitangentSign * glm::cross(n, t);
+    Vec2 xy = map.bumpScale * normalMapToUv(map, Vec2(c.x, c.y));
+    return xy.x * t + xy.y * b + c.z * n;
+}
+
+// A mapped normal made unit, or n where the map gives none.
+inline Vec3 unitOr(const Vec3& mapped, const Vec3& n) {
+    Vec3 u = safeNormalize(mapped);
+    return u == Vec3(0.0f) || !isFinite(u) ? n : u;
+}
+
+// The shading normal after a normal map or a bump map (the surface displaced along n by
+// -bm * height).
 inline Vec3 perturbedNormal(const Material& m, const TextureCache& textures, const SurfacePoint& sp) {
     const Vec3 n = sp.ns;
     Vec3 mapped(0.0f);
     if (m.normalMap.used()) {
-        Vec3 c = 2.0f * textures.vector(m.normalMap, sp.uv, sp.footprint) - Vec3(1.0f);
-        Vec3 t = sp.tangent;
-        if (t == Vec3(0.0f)) t = safeNormalize(sp.dpdu - n * glm::dot(n, sp.dpdu));
-        if (t == Vec3(0.0f)) t = Frame(n).s; // no uv direction at all: the map's x and y are arbitrary
-        Vec3 b = sp.bitangentSign * glm::cross(n, t);
-        Vec2 xy = m.normalMap.bumpScale * normalMapToUv(m.normalMap, Vec2(c.x, c.y));
-        mapped = xy.x * t + xy.y * b + c.z * n;
+        mapped = normalFromMap(m.normalMap, textures, sp);
     } else if (m.bumpMap.used()) {
         if (sp.dpdu == Vec3(0.0f) || sp.dpdv == Vec3(0.0f)) return n;
         Vec2 dh;
@@ -51,8 +66,7 @@ inline Vec3 perturbedNormal(const Material& m, const TextureCache& textures, con
     } else {
         return n;
     }
-    mapped = safeNormalize(mapped);
-    return mapped == Vec3(0.0f) || !isFinite(mapped) ? n : mapped;
+    return unitOr(mapped, n);
 }
 
 // Reads every map of `m` at the hit. `wo` points back along the arriving ray. Textured materials
@@ -64,6 +78,14 @@ inline SurfaceInputs fetchSurfaceInputs(const Material& m, const TextureCache& t
     // Where interpolated or mapped normals put the viewer behind the surface that the geometry
     // shows (silhouettes of smooth meshes, steep bumps), trust the geometry.
     if (glm::dot(wo, in.normal) * glm::dot(wo, sp.ng) <= 0.0f) in.normal = sp.ng;
+    if (m.clearcoat > 0.0f) {
+        // The extension: without its own normal map the coat takes no normal mapping at all.
+        in.clearcoatNormal = m.clearcoatNormalMap.used() ? unitOr(normalFromMap(m.clearcoatNormalMap, textures, sp), sp.ns) : sp.ns;
+        if (glm::dot(wo, in.clearcoatNormal) * glm::dot(wo, sp.ng) <= 0.0f) in.clearcoatNormal = sp.ng;
+        if (m.clearcoatMap.used()) in.clearcoat = std::clamp(textures.scalar(m.clearcoatMap, sp.uv, sp.footprint), 0.0f, 1.0f);
+        if (m.clearcoatRoughnessMap.used())
+            in.clearcoatRoughness = std::clamp(textures.scalar(m.clearcoatRoughnessMap, sp.uv, sp.footprint), 0.0f, 1.0f);
+    }
     if (!m.isTextured()) return in;
     if (m.kdMap.used()) in.kd = textures.color(m.kdMap, sp.uv, sp.footprint);
     if (m.vertexColors) in.kd *= sp.color;

@@ -88,6 +88,11 @@ struct Material {
     float alpha = 1.0f;           // coverage multiplier of map_d (d, where map_d is given)
     float alphaCutoff = -1.0f;    // >= 0: coverage is 1 at or above it and 0 below (glTF MASK)
     float specular = 1.0f;        // glTF KHR_materials_specular's specularFactor
+    float clearcoat = 0.0f;       // glTF KHR_materials_clearcoat: the coat's weight (clearcoatFactor)
+    float clearcoatAlpha = 0.0f;  // and its GGX alpha (clearcoatRoughnessFactor^2)
+    TextureMap clearcoatMap;          // R multiplies clearcoat
+    TextureMap clearcoatRoughnessMap; // G multiplies the coat's roughness
+    TextureMap clearcoatNormalMap;    // the coat's own tangent-space normal map
     bool vertexColors = false;    // glTF COLOR_0 multiplies kd (Scene::vertexColors)
     Spectrum emission{0.0f};      // emitted radiance, both sides (Ke, emittance)
 
@@ -96,7 +101,8 @@ struct Material {
     bool perturbsNormal() const { return normalMap.used() || bumpMap.used(); }
     bool isTextured() const {
         return kdMap.used() || ksMap.used() || roughnessMap.used() || metallicMap.used() || perturbsNormal() ||
-               emissionMap.used() || vertexColors;
+               emissionMap.used() || vertexColors || clearcoatMap.used() || clearcoatRoughnessMap.used() ||
+               clearcoatNormalMap.used();
     }
 };
 
