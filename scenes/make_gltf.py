@@ -18,6 +18,7 @@ keeps its .bin and .png beside it, as exported files do. Run from anywhere; rewr
   cameras.gltf        a perspective camera with aspect ratio 2 and an orthographic one
   bin_and_image.gltf  a quad whose buffer and base colour texture are files beside it
   texture_transform.gltf  one image through five sampler wraps and KHR_texture_transforms
+  clearcoat.gltf      KHR_materials_clearcoat: smooth, rough, over black, and textured coats
 """
 import base64
 import json
@@ -143,12 +144,13 @@ def quad(g, corners, normal, material, uv=True):
     return g.mesh(pos, nrm, uvs, [0, 1, 2, 0, 2, 3], material)
 
 
-def sphere(g, radius, material, rings=24, segments=48):
-    """A UV sphere; spheres of one radius share their accessors, as exporters write instances."""
-    key = ("sphere", radius, rings, segments)
+def sphere(g, radius, material, rings=24, segments=48, uv=False):
+    """A UV sphere; spheres of one radius share their accessors, as exporters write instances.
+    With uv, TEXCOORD_0 runs u = 0..1 around (from +x) and v = 0..1 from the top pole down."""
+    key = ("sphere", radius, rings, segments, uv)
     cache = g.__dict__.setdefault("shared", {})
     if key not in cache:
-        pos, nrm, idx = [], [], []
+        pos, nrm, idx, uvs = [], [], [], []
         for i in range(rings + 1):
             t = math.pi * i / rings
             for j in range(segments + 1):
@@ -156,6 +158,7 @@ def sphere(g, radius, material, rings=24, segments=48):
                 n = (math.sin(t) * math.cos(p), math.cos(t), -math.sin(t) * math.sin(p))
                 nrm += n
                 pos += [radius * c for c in n]
+                uvs += [j / segments, i / rings]
         for i in range(rings):
             for j in range(segments):
                 a, b = i * (segments + 1) + j, (i + 1) * (segments + 1) + j
@@ -165,9 +168,13 @@ def sphere(g, radius, material, rings=24, segments=48):
                     idx += [a + 1, b, b + 1]
         cache[key] = {"POSITION": g.accessor(pos, "VEC3", 3), "NORMAL": g.accessor(nrm, "VEC3", 3),
                       "indices": g.accessor(idx, "SCALAR", 1)}
+        if uv:
+            cache[key]["TEXCOORD_0"] = g.accessor(uvs, "VEC2", 2)
     acc = cache[key]
-    prim = {"attributes": {"POSITION": acc["POSITION"], "NORMAL": acc["NORMAL"]}, "indices": acc["indices"],
-            "material": material}
+    attrs = {"POSITION": acc["POSITION"], "NORMAL": acc["NORMAL"]}
+    if uv:
+        attrs["TEXCOORD_0"] = acc["TEXCOORD_0"]
+    prim = {"attributes": attrs, "indices": acc["indices"], "material": material}
     g.d["meshes"].append({"primitives": [prim]})
     return len(g.d["meshes"]) - 1
 
@@ -473,6 +480,55 @@ def materials():
     g.write("materials.gltf")
 
 
+def clearcoat():
+    """KHR_materials_clearcoat (issue 28) on five spheres over a floor, under a point light and a
+    directional light: from the left a red dielectric (roughness 0.6) without a coat, the same
+    under a smooth coat, under a coat of roughness 0.4, a black base (specularFactor 0) under a
+    smooth coat (the coat's Fresnel alone), and a coat whose weight (R stripes), roughness (G
+    ramp) and normal (dimples) come from textures over a blue base."""
+    g = Gltf()
+    g.d["extensionsUsed"] = ["KHR_materials_clearcoat", "KHR_materials_specular"]
+    floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0.0,
+                                                            "roughnessFactor": 0.9})
+    g.node(mesh=ground(g, 20, floor), name="Ground")
+    n = 64
+    weight = g.image(png(n, n, 3, lambda x, y: (255 if (x // 8) % 2 else 40, int(255 * y / (n - 1)), 0)))
+    def dimple(x, y):
+        cx, cy = (x % 16) - 7.5, (y % 16) - 7.5
+        r2 = cx * cx + cy * cy
+        if r2 > 36:
+            return (128, 128, 255)
+        h = math.sqrt(36 - r2)
+        nx, ny, nz = -cx / 6, cy / 6, h / 6  # a dimple: the dome's normal tilted the other way
+        ln = math.sqrt(nx * nx + ny * ny + nz * nz)
+        return tuple(int(round(127.5 + 127.5 * c / ln)) for c in (nx, ny, nz))
+    normal = g.image(png(n, n, 3, dimple))
+    red = {"baseColorFactor": [0.8, 0.1, 0.1, 1], "metallicFactor": 0.0, "roughnessFactor": 0.6}
+    looks = [("Red", red, {}),
+             ("RedSmoothCoat", red, {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 0.0}}),
+             ("RedRoughCoat", red, {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 0.4}}),
+             ("BlackCoat", {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0, "roughnessFactor": 1.0},
+              {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0}, "KHR_materials_specular": {"specularFactor": 0.0}}),
+             ("TexturedCoat", {"baseColorFactor": [0.1, 0.2, 0.8, 1], "metallicFactor": 0.0, "roughnessFactor": 0.8},
+              {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0, "clearcoatTexture": {"index": weight},
+                                           "clearcoatRoughnessFactor": 0.5, "clearcoatRoughnessTexture": {"index": weight},
+                                           "clearcoatNormalTexture": {"index": normal, "scale": 1.0}}})]
+    for k, (name, pbr, ext) in enumerate(looks):
+        m = g.material(name=name, pbrMetallicRoughness=pbr, extensions=ext)
+        g.node(mesh=sphere(g, 0.45, m, uv=True), translation=[-2.0 + k, 0.45, 0.0], name=name)
+    # An emissive panel above and in front, which the smooth coats mirror (a point light they cannot).
+    panel = g.material(name="Panel", pbrMetallicRoughness={"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0},
+                       emissiveFactor=[1.0, 0.95, 0.85], extensions={"KHR_materials_emissive_strength": {"emissiveStrength": 6.0}})
+    g.d["extensionsUsed"].append("KHR_materials_emissive_strength")
+    g.node(mesh=quad(g, [(-2.5, 2.5, 1.0), (2.5, 2.5, 1.0), (2.5, 2.5, 2.5), (-2.5, 2.5, 2.5)], (0, -1, 0), panel, uv=False),
+           name="Panel")
+    sun = g.light(type="directional", color=[0.8, 0.85, 1.0], intensity=300.0, name="Sun")
+    g.node(extensions={"KHR_lights_punctual": {"light": sun}}, rotation=look_at_quaternion([0, 0, 0], [1.0, -2.0, -1.5]),
+           name="SunNode")
+    camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.45, 0.0], 30.0, aspect=2.0)
+    g.write("clearcoat.gltf")
+
+
 def cornell_box():
     """scenes/cornell_box.obj as glTF: the same triangles (read from the OBJ, quads split as pt
     splits them), Lambert walls through KHR_materials_specular's specularFactor 0, the lamp's Ke
@@ -571,3 +627,4 @@ if __name__ == "__main__":
     materials()
     cornell_box()
     glass()
+    clearcoat()

@@ -55,6 +55,10 @@ mutate plane_point.gltf bad_camera.gltf 'd["cameras"][0]["type"] = "fisheye"'
 mutate plane_point.gltf bad_transmission.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 2}}'
 mutate plane_point.gltf bad_specular_color.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_specular": {"specularColorFactor": [1, -1, 0]}}'
 mutate plane_point.gltf bad_specular.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_specular": {"specularFactor": "high"}}'
+mutate plane_point.gltf bad_clearcoat.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_clearcoat": {"clearcoatFactor": 1.5}}'
+mutate plane_point.gltf nan_clearcoat.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_clearcoat": {"clearcoatRoughnessFactor": "NaN"}}'
+mutate plane_point.gltf clearcoat_texture.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_clearcoat": {"clearcoatFactor": 1, "clearcoatTexture": {"index": 7}}}'
+mutate clearcoat.gltf clearcoat_normal_scale.gltf '[m for m in d["materials"] if m["name"] == "TexturedCoat"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatNormalTexture"]["scale"] = 1e9'
 mutate plane_point.gltf thin_walled.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 0.5}}'
 mutate plane_point.gltf lines.gltf 'd["meshes"][0]["primitives"][0]["mode"] = 1'
 mkdir -p lonely && cp "$gltf/bin_and_image.gltf" lonely/
@@ -83,6 +87,10 @@ check gltf_bad_camera 1 'bad_camera.gltf: camera 0 "Down": type "fisheye"; expec
 check gltf_bad_transmission 1 'material 0 "White": extensions.KHR_materials_transmission.transmissionFactor 2 must be a number in [0, 1]' render bad_transmission.gltf -o out/a.exr
 check gltf_bad_specular_color 1 'extensions.KHR_materials_specular.specularColorFactor must be an array of 3 numbers of at least 0, found -1 in it' render bad_specular_color.gltf -o out/a.exr
 check gltf_bad_specular 1 'extensions.KHR_materials_specular.specularFactor must be a number, found "high"' render bad_specular.gltf -o out/a.exr
+check gltf_bad_clearcoat 1 'extensions.KHR_materials_clearcoat.clearcoatFactor 1.5 must be a number in [0, 1]' render bad_clearcoat.gltf -o out/a.exr
+check gltf_nan_clearcoat 1 'extensions.KHR_materials_clearcoat.clearcoatRoughnessFactor must be a number, found "NaN"' render nan_clearcoat.gltf -o out/a.exr
+check gltf_clearcoat_texture 1 'extensions.KHR_materials_clearcoat.clearcoatTexture.index: texture 7 does not exist' render clearcoat_texture.gltf -o out/a.exr
+check gltf_clearcoat_normal_scale 1 'KHR_materials_clearcoat clearcoatNormalTexture: scale 1e+09 is beyond +-1e6' render clearcoat_normal_scale.gltf -o out/a.exr
 check gltf_thin_walled 0 'without KHR_materials_volume the surface is thin-walled' render thin_walled.gltf -spp 1 --res 8x8 -o out/a.exr
 check gltf_lines 0 '1 point or line primitives skipped' render lines.gltf -spp 1 --res 8x8 -o out/a.exr
 check gltf_missing_bin 1 'lonely/bin_and_image.gltf: buffer 0: "lonely/bin_and_image.bin" cannot be opened: No such file or directory' render lonely/bin_and_image.gltf -o out/a.exr

@@ -346,3 +346,58 @@ TEST(Gltf, FileTangentsAreUsed) {
 
 } // namespace
 } // namespace pt::test
+
+namespace pt::test {
+namespace {
+
+// KHR_materials_clearcoat as read from clearcoat.gltf: factors, alpha = roughness^2, the three
+// maps with their channels, and no "ignored" warning.
+TEST(Gltf, ClearcoatIsRead) {
+    Warnings w;
+    Scene s = load(kGltf + "clearcoat.gltf", &w);
+    for (const std::string& m : w.messages()) EXPECT_EQ(m.find("ignored"), std::string::npos) << m;
+    auto find = [&](const std::string& name) -> const Material& {
+        for (const Material& m : s.materials)
+            if (m.name == name) return m;
+        ADD_FAILURE() << "no material " << name;
+        return s.materials[0];
+    };
+    EXPECT_EQ(find("Red").clearcoat, 0.0f);
+    EXPECT_EQ(find("RedSmoothCoat").clearcoat, 1.0f);
+    EXPECT_EQ(find("RedSmoothCoat").clearcoatAlpha, 0.0f);
+    EXPECT_NEAR(find("RedRoughCoat").clearcoatAlpha, 0.16f, 1e-6f);
+    const Material& t = find("TexturedCoat");
+    EXPECT_NEAR(t.clearcoatAlpha, 0.25f, 1e-6f);
+    EXPECT_TRUE(t.clearcoatMap.used() && t.clearcoatRoughnessMap.used() && t.clearcoatNormalMap.used());
+    EXPECT_EQ(t.clearcoatMap.channel, TextureChannel::R);
+    EXPECT_EQ(t.clearcoatRoughnessMap.channel, TextureChannel::G);
+    EXPECT_TRUE(t.isTextured());
+}
+
+// The analytic case of the issue: a smooth coat over a black base under a uniform white
+// environment reflects Fc = 0.04 + 0.96 (1 - cos)^5, which is 0.04 where the sphere faces the
+// camera; over a white Lambert base it keeps all the light (Fc + (1 - Fc) 1 = 1).
+TEST(Gltf, ClearcoatInAFurnace) {
+    Scene s = emptyScene(lookAt({0, 0, 4}, {0, 0, 0}, 30));
+    auto white = std::make_shared<EnvironmentMap>();
+    white->width = 4, white->height = 2;
+    white->rgb.assign(4 * 2 * 3, 1.0f);
+    s.environment.map = white;
+    Material coat;
+    coat.model = MaterialModel::MetalRough;
+    coat.kd = Spectrum(0.0f);
+    coat.metallic = 0.0f;
+    coat.roughness = 0.25f;
+    coat.eta = 1.5f;
+    coat.specular = 0.0f;
+    coat.clearcoat = 1.0f;
+    addIcosphere(s, Vec3(0), 1.0f, 5, addMaterial(s, coat), false, true);
+    Rendered black = render(s, 16, 16, 256);
+    expectNear(regionStats(black, 7, 7, 9, 9), Spectrum(0.04f), 4.0f, 0.02f, "smooth coat over black, facing");
+    s.materials[0].kd = Spectrum(1.0f);
+    Rendered white1 = render(s, 16, 16, 256);
+    expectNear(regionStats(white1, 4, 4, 12, 12), Spectrum(1.0f), 4.0f, 2e-3f, "smooth coat over white Lambert");
+}
+
+} // namespace
+} // namespace pt::test

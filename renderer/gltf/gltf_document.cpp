@@ -448,6 +448,14 @@ private:
             numbers(*e, eat, "specularColorFactor", 3, 0.0, kAny);
             textureInfo(*e, eat, "specularColorTexture");
         }
+        if (const Json* e = extension(m, at, "KHR_materials_clearcoat")) {
+            At eat = at.inside("extensions.KHR_materials_clearcoat");
+            number(*e, eat, "clearcoatFactor", 0.0, 1.0);
+            textureInfo(*e, eat, "clearcoatTexture");
+            number(*e, eat, "clearcoatRoughnessFactor", 0.0, 1.0);
+            textureInfo(*e, eat, "clearcoatRoughnessTexture");
+            textureInfo(*e, eat, "clearcoatNormalTexture");
+        }
         if (const Json* e = extension(m, at, "KHR_materials_transmission")) {
             At eat = at.inside("extensions.KHR_materials_transmission");
             number(*e, eat, "transmissionFactor", 0.0, 1.0);

@@ -24,7 +24,8 @@ namespace pt {
 namespace {
 
 constexpr const char* kSupportedExtensions[] = {
-    "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular", "KHR_materials_transmission",
+    "KHR_materials_clearcoat", "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular",
+    "KHR_materials_transmission",
     "KHR_materials_volume", "KHR_lights_punctual", "KHR_mesh_quantization", "KHR_texture_transform",
 };
 
@@ -408,6 +409,26 @@ private:
         return cached;
     }
 
+    // A texture reference inside a material extension (a JSON object, not tinygltf's TextureInfo):
+    // an unused map where `key` is absent. A normal texture's scale becomes bumpScale.
+    TextureMap extensionTexture(const tinygltf::Value& ext, const char* key, const std::string& what) {
+        if (!ext.Has(key)) return TextureMap{};
+        const tinygltf::Value& info = ext.Get(key);
+        tinygltf::ExtensionMap extensions;
+        if (info.Has("extensions"))
+            for (const std::string& name : info.Get("extensions").Keys()) extensions[name] = info.Get("extensions").Get(name);
+        int texCoord = info.Has("texCoord") ? info.Get("texCoord").GetNumberAsInt() : 0;
+        TextureMap map = textureMap(info.Get("index").GetNumberAsInt(), texCoord, extensions, false, what);
+        if (info.Has("scale")) {
+            double scale = info.Get("scale").GetNumberAsDouble();
+            if (!(std::abs(scale) <= kMaxNormalScale))
+                throw LoadError(what + ": scale " + shortNumber(scale) + " is beyond +-1e6, where the perturbed normal's "
+                                "length overflows float");
+            map.bumpScale = float(scale);
+        }
+        return map;
+    }
+
     // A texture reference with its sampler's wrap modes and KHR_texture_transform (in pt's uv,
     // whose v runs up where glTF's runs down: setGltfTransform).
     TextureMap textureMap(int index, int texCoord, const tinygltf::ExtensionMap& extensions, bool colour,
@@ -529,6 +550,19 @@ private:
             if (e->second.Has("specularTexture") || e->second.Has("specularColorTexture"))
                 warnOnce(warnedSpecularTexture_, ext + ": specularTexture and specularColorTexture are ignored (their factors apply)");
         }
+        if (auto e = g.extensions.find("KHR_materials_clearcoat"); e != g.extensions.end()) {
+            // Ranges and texture indices were checked with the document (gltf_document.cpp).
+            std::string ext = what + " KHR_materials_clearcoat";
+            m.clearcoat = extensionNumber(e->second, "clearcoatFactor", 0.0f);
+            m.clearcoatAlpha = sqr(extensionNumber(e->second, "clearcoatRoughnessFactor", 0.0f));
+            if (m.clearcoat > 0.0f) {
+                m.clearcoatMap = extensionTexture(e->second, "clearcoatTexture", ext + " clearcoatTexture");
+                m.clearcoatMap.channel = TextureChannel::R;
+                m.clearcoatRoughnessMap = extensionTexture(e->second, "clearcoatRoughnessTexture", ext + " clearcoatRoughnessTexture");
+                m.clearcoatRoughnessMap.channel = TextureChannel::G;
+                m.clearcoatNormalMap = extensionTexture(e->second, "clearcoatNormalTexture", ext + " clearcoatNormalTexture");
+            }
+        }
         if (auto e = g.extensions.find("KHR_materials_transmission"); e != g.extensions.end()) {
             std::string ext = what + " KHR_materials_transmission";
             m.transparency = extensionNumber(e->second, "transmissionFactor", 0.0f);
@@ -539,6 +573,9 @@ private:
                 warnOnce(warnedThinWalled_, ext + ": without KHR_materials_volume the surface is thin-walled; pt refracts "
                                                   "through it with the ior (as Blender's importer does)");
         }
+        if (m.clearcoat > 0.0f && m.transparency > 0.0f)
+            warnOnce(warnedCoatOnTransmission_, what + ": KHR_materials_clearcoat on a transmitting material is ignored "
+                                                       "(pt's transmission is the lab's refraction tree, without a coat)");
         if (auto e = g.extensions.find("KHR_materials_volume"); e != g.extensions.end()) {
             std::string ext = what + " KHR_materials_volume";
             if (e->second.Has("attenuationDistance"))
@@ -686,7 +723,7 @@ private:
     bool warnedColor_ = false, warnedTexCoord_ = false, warnedBrightColors_ = false,
          warnedTangentSign_ = false;
     bool warnedMixedSets_ = false, warnedSpecularTexture_ = false, warnedTransmissionTexture_ = false, warnedThinWalled_ = false,
-         warnedAttenuation_ = false;
+         warnedAttenuation_ = false, warnedCoatOnTransmission_ = false;
     void warnOnce(bool& warned, const std::string& message) {
         if (!warned) warnings_.add(message);
         warned = true;
