@@ -232,22 +232,26 @@ def spheres():
     g.write("spheres.gltf")
 
 
+def dome_normal(x, y, sign):
+    """Tangent-space normal map texel of domes (sign 1) or dimples (-1) of radius 6 on a 16-texel
+    grid; +y up the image."""
+    cx, cy = (x % 16) - 7.5, (y % 16) - 7.5
+    r2 = cx * cx + cy * cy
+    if r2 > 36:
+        return (128, 128, 255)
+    h = math.sqrt(36 - r2)
+    nx, ny, nz = sign * cx / 6, -sign * cy / 6, h / 6
+    ln = math.sqrt(nx * nx + ny * ny + nz * nz)
+    return tuple(int(round(127.5 + 127.5 * c / ln)) for c in (nx, ny, nz))
+
+
 def textured():
     g = Gltf()
     n = 64
     base = png(n, n, 4, lambda x, y: ((40, 120, 200, 255) if (x // 8 + y // 8) % 2 else (230, 200, 60, 255))
                if 6 <= x < 58 and 6 <= y < 58 else (200, 200, 200, 0))  # a clear frame: cut by MASK
     mr = png(n, n, 3, lambda x, y: (0, int(255 * x / (n - 1)), 255 if (y // 16) % 2 else 0))  # G ramp, B stripes
-    def bump(x, y):
-        cx, cy = (x % 16) - 7.5, (y % 16) - 7.5
-        r2 = cx * cx + cy * cy
-        if r2 > 36:
-            return (128, 128, 255)
-        h = math.sqrt(36 - r2)
-        nx, ny, nz = cx / 6, -cy / 6, h / 6  # tangent-space normal of a dome; +y up the image
-        ln = math.sqrt(nx * nx + ny * ny + nz * nz)
-        return tuple(int(round(127.5 + 127.5 * c / ln)) for c in (nx, ny, nz))
-    normal = png(n, n, 3, bump)
+    normal = png(n, n, 3, lambda x, y: dome_normal(x, y, 1.0))
     emissive = png(n, n, 3, lambda x, y: (255, 140, 40) if 24 <= x < 40 and 24 <= y < 40 else (0, 0, 0))
     tb, tmr, tn, te = g.image(base), g.image(mr), g.image(normal), g.image(emissive)
     m = g.material(name="Tile", alphaMode="MASK", alphaCutoff=0.5,
@@ -493,16 +497,7 @@ def clearcoat():
     g.node(mesh=ground(g, 20, floor), name="Ground")
     n = 64
     weight = g.image(png(n, n, 3, lambda x, y: (255 if (x // 8) % 2 else 40, int(255 * y / (n - 1)), 0)))
-    def dimple(x, y):
-        cx, cy = (x % 16) - 7.5, (y % 16) - 7.5
-        r2 = cx * cx + cy * cy
-        if r2 > 36:
-            return (128, 128, 255)
-        h = math.sqrt(36 - r2)
-        nx, ny, nz = -cx / 6, cy / 6, h / 6  # a dimple: the dome's normal tilted the other way
-        ln = math.sqrt(nx * nx + ny * ny + nz * nz)
-        return tuple(int(round(127.5 + 127.5 * c / ln)) for c in (nx, ny, nz))
-    normal = g.image(png(n, n, 3, dimple))
+    normal = g.image(png(n, n, 3, lambda x, y: dome_normal(x, y, -1.0)))  # dimples
     red = {"baseColorFactor": [0.8, 0.1, 0.1, 1], "metallicFactor": 0.0, "roughnessFactor": 0.6}
     looks = [("Red", red, {}),
              ("RedSmoothCoat", red, {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 0.0}}),

@@ -268,12 +268,18 @@ TEST(Gltf, CornellBoxEqualsItsObj) {
 // KHR_materials_transmission as a smooth clear dielectric: a white glass sphere in a white
 // furnace reflects and refracts all it receives, so it vanishes (radiance 1 everywhere); a rough
 // one loses only what single scattering loses, and the base colour tints what passes.
-TEST(Gltf, TransmissionInAFurnace) {
+// An empty scene seen from (0, 0, 4) under a uniform white environment map (a light: sampled).
+Scene whiteFurnace() {
     Scene s = emptyScene(lookAt({0, 0, 4}, {0, 0, 0}, 30));
     auto white = std::make_shared<EnvironmentMap>();
     white->width = 4, white->height = 2;
     white->rgb.assign(4 * 2 * 3, 1.0f);
     s.environment.map = white;
+    return s;
+}
+
+TEST(Gltf, TransmissionInAFurnace) {
+    Scene s = whiteFurnace();
     Material glass;
     glass.model = MaterialModel::MetalRough;
     glass.kd = Spectrum(1.0f);
@@ -378,11 +384,7 @@ TEST(Gltf, ClearcoatIsRead) {
 // environment reflects Fc = 0.04 + 0.96 (1 - cos)^5, which is 0.04 where the sphere faces the
 // camera; over a white Lambert base it keeps all the light (Fc + (1 - Fc) 1 = 1).
 TEST(Gltf, ClearcoatInAFurnace) {
-    Scene s = emptyScene(lookAt({0, 0, 4}, {0, 0, 0}, 30));
-    auto white = std::make_shared<EnvironmentMap>();
-    white->width = 4, white->height = 2;
-    white->rgb.assign(4 * 2 * 3, 1.0f);
-    s.environment.map = white;
+    Scene s = whiteFurnace();
     Material coat;
     coat.model = MaterialModel::MetalRough;
     coat.kd = Spectrum(0.0f);

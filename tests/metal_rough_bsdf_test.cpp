@@ -87,6 +87,32 @@ TEST(MetalRoughBsdf, IsReciprocal) {
 
 // Broad lobes on the sphere of directions; narrow ones in half-vector space (metal only, where
 // the whole BRDF is the specular lobe). Every sample's weight must be eval / pdf.
+// Samples b at wo: the directions must follow the density evalPdf reports (chi-square), and every
+// sample's pdf and weight must be evalPdf's and eval / pdf. Returns "" or what failed.
+std::string checkSampling(const MetalRoughBsdf& b, const Vec3& wo) {
+    Pcg32 rng(3, 7);
+    bool weightsOk = true;
+    auto r = chiSquareDirections(
+        [&](Vec2 u, Vec3& wi) {
+            BsdfSample s;
+            if (!b.sample(wo, rng.nextFloat(), u, s)) return false;
+            float pdf;
+            Spectrum f = b.evalPdf(wo, s.wi, pdf);
+            if (std::abs(pdf - s.pdf) > 1e-4f * pdf || glm::length(s.weight - f / pdf) > 1e-4f * glm::length(s.weight))
+                weightsOk = false;
+            wi = s.wi;
+            return true;
+        },
+        [&](const Vec3& wi) {
+            float pdf;
+            b.evalPdf(wo, wi, pdf);
+            return double(pdf);
+        },
+        100000);
+    if (!r.pass) return r.report;
+    return weightsOk ? "" : "a sample's pdf or weight is not evalPdf's";
+}
+
 TEST(MetalRoughBsdf, SamplingMatchesPdf) {
     const Spectrum base(0.9f, 0.6f, 0.3f);
     for (float metallic : {0.0f, 0.5f, 1.0f})
@@ -94,27 +120,7 @@ TEST(MetalRoughBsdf, SamplingMatchesPdf) {
             for (float cosO : {1.0f, 0.6f, 0.2f, 0.03f}) {
                 Vec3 wo = direction(cosO, 0.4f);
                 MetalRoughBsdf b = MetalRoughBsdf::make(base, metallic, roughness * roughness, 1.5f, wo.z);
-                Pcg32 rng(3, 7);
-                bool weightsOk = true;
-                auto r = chiSquareDirections(
-                    [&](Vec2 u, Vec3& wi) {
-                        BsdfSample s;
-                        if (!b.sample(wo, rng.nextFloat(), u, s)) return false;
-                        float pdf;
-                        Spectrum f = b.evalPdf(wo, s.wi, pdf);
-                        if (std::abs(pdf - s.pdf) > 1e-4f * pdf || glm::length(s.weight - f / pdf) > 1e-4f * glm::length(s.weight))
-                            weightsOk = false;
-                        wi = s.wi;
-                        return true;
-                    },
-                    [&](const Vec3& wi) {
-                        float pdf;
-                        b.evalPdf(wo, wi, pdf);
-                        return double(pdf);
-                    },
-                    100000);
-                EXPECT_TRUE(r.pass) << "metallic " << metallic << " roughness " << roughness << " cos " << cosO << ": " << r.report;
-                EXPECT_TRUE(weightsOk) << "metallic " << metallic << " roughness " << roughness << " cos " << cosO;
+                EXPECT_EQ(checkSampling(b, wo), "") << "metallic " << metallic << " roughness " << roughness << " cos " << cosO;
             }
     for (float alpha : {0.002f, 0.01f, 0.05f, 0.2f})
         for (float cosO : {1.0f, 0.5f, 0.1f}) {
@@ -248,28 +254,8 @@ TEST(MetalRoughBsdf, ClearcoatSamplingMatchesPdf) {
                 Vec3 wo = direction(cosO, 0.4f);
                 MetalRoughBsdf b =
                     MetalRoughBsdf::make(coated(Spectrum(0.8f, 0.4f, 0.2f), 1.0f, sqr(coatRoughness), nc), wo);
-                Pcg32 rng(3, 5);
-                bool weightsOk = true;
-                auto r = chiSquareDirections(
-                    [&](Vec2 u, Vec3& wi) {
-                        BsdfSample s;
-                        if (!b.sample(wo, rng.nextFloat(), u, s)) return false;
-                        float pdf;
-                        Spectrum f = b.evalPdf(wo, s.wi, pdf);
-                        if (std::abs(pdf - s.pdf) > 1e-4f * pdf || glm::length(s.weight - f / pdf) > 1e-4f * glm::length(s.weight))
-                            weightsOk = false;
-                        wi = s.wi;
-                        return true;
-                    },
-                    [&](const Vec3& wi) {
-                        float pdf;
-                        b.evalPdf(wo, wi, pdf);
-                        return double(pdf);
-                    },
-                    100000);
-                EXPECT_TRUE(r.pass) << "tilted " << (nc.z < 1.0f) << " coat roughness " << coatRoughness << " cos " << cosO
-                                    << ": " << r.report;
-                EXPECT_TRUE(weightsOk) << "coat roughness " << coatRoughness << " cos " << cosO;
+                EXPECT_EQ(checkSampling(b, wo), "")
+                    << "tilted " << (nc.z < 1.0f) << " coat roughness " << coatRoughness << " cos " << cosO;
             }
 }
 
