@@ -18,7 +18,8 @@ keeps its .bin and .png beside it, as exported files do. Run from anywhere; rewr
   cameras.gltf        a perspective camera with aspect ratio 2 and an orthographic one
   bin_and_image.gltf  a quad whose buffer and base colour texture are files beside it
   texture_transform.gltf  one image through five sampler wraps and KHR_texture_transforms
-  clearcoat.gltf      KHR_materials_clearcoat: smooth, rough, over black, and textured coats
+  clearcoat.gltf      KHR_materials_clearcoat: smooth, rough, over black, and textured coats;
+  clearcoat_white.gltf  the same spheres under the default white environment (crosscheck)
 """
 import base64
 import json
@@ -484,9 +485,10 @@ def materials():
     g.write("materials.gltf")
 
 
-def clearcoat():
-    """KHR_materials_clearcoat (issue 28) on five spheres over a floor, under a point light and a
-    directional light: from the left a red dielectric (roughness 0.6) without a coat, the same
+def clearcoat(lit=True):
+    """KHR_materials_clearcoat (issue 28) on five spheres over a floor, under an emissive panel
+    and a directional light (lit), or under the default white environment (clearcoat_white.gltf,
+    the Cycles crosscheck's case, where only the materials differ): from the left a red dielectric (roughness 0.6) without a coat, the same
     under a smooth coat, under a coat of roughness 0.4, a black base (specularFactor 0) under a
     smooth coat (the coat's Fresnel alone), and a coat whose weight (R stripes), roughness (G
     ramp) and normal (dimples) come from textures over a blue base."""
@@ -511,6 +513,10 @@ def clearcoat():
     for k, (name, pbr, ext) in enumerate(looks):
         m = g.material(name=name, pbrMetallicRoughness=pbr, extensions=ext)
         g.node(mesh=sphere(g, 0.45, m, uv=True), translation=[-2.0 + k, 0.45, 0.0], name=name)
+    if not lit:
+        camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.45, 0.0], 30.0, aspect=2.0)
+        g.write("clearcoat_white.gltf")
+        return
     # An emissive panel above and in front, which the smooth coats mirror (a point light they cannot).
     panel = g.material(name="Panel", pbrMetallicRoughness={"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0},
                        emissiveFactor=[1.0, 0.95, 0.85], extensions={"KHR_materials_emissive_strength": {"emissiveStrength": 6.0}})
@@ -623,3 +629,4 @@ if __name__ == "__main__":
     cornell_box()
     glass()
     clearcoat()
+    clearcoat(lit=False)
