@@ -516,10 +516,11 @@ void addRunMetadata(Image& image, const RenderArgs& args, const RenderResult& re
                     uint32_t first, uint32_t last, const PixelWindow& window, bool part) {
     auto integer = [&](const char* k, long long v) { image.metadata.push_back(ImageAttribute::integerValue(k, v)); };
     const Film& film = result.film;
-    image.metadata.push_back(ImageAttribute::integerValue("pt:spp", film.minSamples()));
-    if (film.maxSamples() != film.minSamples()) { // adaptive, or a resumed part: per pixel in --aov spp
-        integer("pt:sppMax", film.maxSamples());
-        image.metadata.push_back(ImageAttribute::floatValue("pt:sppMean", film.meanSamples()));
+    const Film::SampleCounts counts = film.sampleCounts();
+    image.metadata.push_back(ImageAttribute::integerValue("pt:spp", counts.fewest));
+    if (counts.most != counts.fewest) { // adaptive, or a resumed part: per pixel in --aov spp
+        integer("pt:sppMax", counts.most);
+        image.metadata.push_back(ImageAttribute::floatValue("pt:sppMean", counts.mean));
     }
     if (film.hasConvergence()) integer("pt:converged", (long long)film.convergedCount());
     if (args.budget.seconds > 0.0) {
@@ -739,7 +740,7 @@ int renderCommand(int argc, char** argv) {
     if (result.cancelled) {
         // Never replace OUT with a partial image: the finished samples go beside it.
         int status = 128 + (stopSignal() ? stopSignal() : SIGINT);
-        uint32_t done = result.film.minSamples();
+        uint32_t done = result.film.sampleCounts().fewest;
         if (done == 0) {
             std::fprintf(err, "pt: interrupted before every pixel had a sample; nothing written\n");
             return status;
@@ -767,7 +768,8 @@ int renderCommand(int argc, char** argv) {
         std::fprintf(err, "pt: the signal came after the last sample; the whole image was written\n");
     // A few discarded samples are rounding; many mean light lost somewhere: say so, not just count.
     const Film& film = result.film;
-    uint64_t samples = uint64_t(std::llround(double(window.width()) * window.height() * film.meanSamples()));
+    const Film::SampleCounts counts = film.sampleCounts();
+    uint64_t samples = uint64_t(std::llround(double(window.width()) * window.height() * counts.mean));
     if (!args.quiet && result.rays.discarded > std::max<uint64_t>(10, samples / 10000))
         std::fprintf(err, "pt: warning: %llu of %llu samples came out NaN or infinite and were dropped; the image is "
                           "darker than it should be where they fell\n",
@@ -777,10 +779,8 @@ int renderCommand(int argc, char** argv) {
         args.settings.clamp > 0.0f ? ", " + std::to_string(r.clamped) + " clamped (--clamp biases the image)" : "";
     // Pixels of an adaptive render hold different counts: the range, the mean and what stopped it.
     char sppText[160];
-    if (film.maxSamples() == film.minSamples()) std::snprintf(sppText, sizeof sppText, "%u spp", film.minSamples());
-    else
-        std::snprintf(sppText, sizeof sppText, "%u to %u spp (mean %.1f)", film.minSamples(), film.maxSamples(),
-                      film.meanSamples());
+    if (counts.most == counts.fewest) std::snprintf(sppText, sizeof sppText, "%u spp", counts.fewest);
+    else std::snprintf(sppText, sizeof sppText, "%u to %u spp (mean %.1f)", counts.fewest, counts.most, counts.mean);
     std::string stopNote;
     if (film.hasConvergence())
         stopNote += ", " + std::to_string(film.convergedCount()) + " of " + std::to_string(uint64_t(window.width()) * window.height()) +

@@ -5,18 +5,18 @@
 
 namespace pt {
 
-uint32_t Film::minSamples() const {
-    return count_.empty() ? 0 : *std::min_element(count_.begin(), count_.end());
-}
-
-uint32_t Film::maxSamples() const {
-    return count_.empty() ? 0 : *std::max_element(count_.begin(), count_.end());
-}
-
-double Film::meanSamples() const {
+Film::SampleCounts Film::sampleCounts() const {
+    SampleCounts c;
+    if (count_.empty()) return c;
+    c.fewest = c.most = count_[0];
     double total = 0.0;
-    for (uint32_t c : count_) total += c;
-    return count_.empty() ? 0.0 : total / double(count_.size());
+    for (uint32_t n : count_) {
+        c.fewest = std::min(c.fewest, n);
+        c.most = std::max(c.most, n);
+        total += n;
+    }
+    c.mean = total / double(count_.size());
+    return c;
 }
 
 size_t Film::convergedCount() const { return size_t(std::count(converged_.begin(), converged_.end(), uint8_t(1))); }

@@ -19,10 +19,12 @@ public:
 
     int width() const { return width_; }
     int height() const { return height_; }
-    // Fewest and most samples any pixel holds, and their mean.
-    uint32_t minSamples() const;
-    uint32_t maxSamples() const;
-    double meanSamples() const;
+    // Fewest and most samples any pixel holds, and their mean, in one pass over the counts.
+    struct SampleCounts {
+        uint32_t fewest = 0, most = 0;
+        double mean = 0.0;
+    };
+    SampleCounts sampleCounts() const;
 
     void add(size_t pixel, const glm::dvec3& sum, const glm::dvec3& sumSq, uint32_t n) {
         count_[pixel] += n;
