@@ -11,10 +11,10 @@ inline float schlickWeight(float cosTheta) {
     return m2 * m2 * m;
 }
 
-} // namespace
-
 // The clear coat's Fresnel: Schlick's with F0 = 0.04 (ior 1.5), as the extension fixes it.
 inline float coatFresnel(float cosTheta) { return 0.04f + 0.96f * schlickWeight(std::abs(cosTheta)); }
+
+} // namespace
 
 MetalRoughBsdf MetalRoughBsdf::make(const MetalRoughParameters& p, const Vec3& wo) {
     MetalRoughBsdf b;

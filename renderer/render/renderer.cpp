@@ -167,8 +167,9 @@ namespace {
 // where pixels may first stop, and after it passes of a quarter of what a pixel holds, so that a
 // pixel stops soon after its noise reaches the target.
 uint32_t passSize(uint32_t done, uint32_t maxPass, const SampleBudget& budget) {
-    if (!budget.adaptive() || done < budget.minSpp)
-        return budget.adaptive() ? std::min(std::clamp(done, 1u, maxPass), budget.minSpp - done) : std::clamp(done, 1u, maxPass);
+    const uint32_t doubling = std::clamp(done, 1u, maxPass);
+    if (!budget.adaptive()) return doubling;
+    if (done < budget.minSpp) return std::min(doubling, budget.minSpp - done);
     return std::clamp(done / 4, 1u, maxPass);
 }
 
