@@ -419,14 +419,17 @@ private:
             for (const std::string& name : info.Get("extensions").Keys()) extensions[name] = info.Get("extensions").Get(name);
         int texCoord = info.Has("texCoord") ? info.Get("texCoord").GetNumberAsInt() : 0;
         TextureMap map = textureMap(info.Get("index").GetNumberAsInt(), texCoord, extensions, false, what);
-        if (info.Has("scale")) {
-            double scale = info.Get("scale").GetNumberAsDouble();
-            if (!(std::abs(scale) <= kMaxNormalScale))
-                throw LoadError(what + ": scale " + shortNumber(scale) + " is beyond +-1e6, where the perturbed normal's "
-                                "length overflows float");
-            map.bumpScale = float(scale);
-        }
+        if (info.Has("scale")) map.bumpScale = normalScale(info.Get("scale").GetNumberAsDouble(), what + ": scale");
         return map;
+    }
+
+    // A normal texture's scale, refused (naming it as `label`) where the perturbed normal's length
+    // would overflow float.
+    static float normalScale(double scale, const std::string& label) {
+        if (!(std::abs(scale) <= kMaxNormalScale))
+            throw LoadError(label + " " + shortNumber(scale) + " is beyond +-1e6, where the perturbed normal's length "
+                            "overflows float");
+        return float(scale);
     }
 
     // A texture reference with its sampler's wrap modes and KHR_texture_transform (in pt's uv,
@@ -594,10 +597,7 @@ private:
         if (g.normalTexture.index >= 0) {
             m.normalMap = textureMap(g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions, false,
                                      what + " normalTexture");
-            m.normalMap.bumpScale = float(g.normalTexture.scale);
-            if (!(std::abs(g.normalTexture.scale) <= kMaxNormalScale))
-                throw LoadError(what + ": normalTexture.scale " + shortNumber(g.normalTexture.scale) + " is beyond +-1e6, "
-                                "where the perturbed normal's length overflows float");
+            m.normalMap.bumpScale = normalScale(g.normalTexture.scale, what + ": normalTexture.scale");
         }
         float strength = 1.0f;
         if (auto e = g.extensions.find("KHR_materials_emissive_strength");
