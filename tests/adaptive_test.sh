@@ -10,6 +10,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
+source "$root/tests/stop_part_way.sh"
 fail=0
 ok() { echo "ok   $*"; }
 bad() { echo "FAIL $*"; fail=1; }
@@ -74,15 +75,8 @@ if "$pt" merge c0.exr c1.exr --aov spp -o merged.exr 2>merge.err >/dev/null && [
 
 # Interrupted and resumed: equals the adaptive render never stopped.
 long=(--res 64x48 --noise 0.004 --min-spp 16 -spp 2048 --aov spp -q)
-for delay in 1 2 4; do
-  "$pt" render "$scene" "${long[@]}" -o whole.exr >/dev/null 2>&1 &
-  pid=$!
-  sleep $delay
-  kill -TERM "$pid" 2>/dev/null
-  wait "$pid"
-  status=$?
-  [[ $status -eq 143 && ! -f whole.partial.exr ]] || break
-done
+stop_part_way "$pt" whole.exr "$scene" "${long[@]}"
+status=$?
 if [[ $status -eq 143 && -f whole.partial.exr ]]; then
   run "$pt" render "$scene" "${long[@]}" --resume whole.partial.exr -o whole.exr
   run "$pt" render "$scene" "${long[@]}" -o never_stopped.exr

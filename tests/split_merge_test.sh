@@ -9,6 +9,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
+source "$root/tests/stop_part_way.sh"
 fail=0
 exact() { # NAME MERGED SINGLE
   if /usr/bin/python3 "$root/tests/compare_exact.py" "$2" "$3" >"$1.log"; then echo "ok   $1: $(cat "$1.log")"
@@ -51,18 +52,9 @@ if grep -q "hold fewer than the job's 12 samples (the fewest 7); no whole-image 
 
 # Interrupted and resumed: the partial of a render stopped by SIGTERM, finished by --resume,
 # equals the render that was never stopped. 512 spp takes a few seconds on 2 cores.
-# A signal before rendering begins (pt still starting or loading, on a busy machine) stops it
-# with nothing written: then it is sent later.
 long=(-spp 512 --res 64x48 --aov variance -q)
-for delay in 1 2 4; do
-  "$pt" render "$root/scenes/cornell_box.obj" "${long[@]}" -o whole.exr >/dev/null 2>&1 &
-  pid=$!
-  sleep $delay
-  kill -TERM "$pid" 2>/dev/null
-  wait "$pid"
-  status=$?
-  [[ $status -eq 143 && ! -f whole.partial.exr ]] || break
-done
+stop_part_way "$pt" whole.exr "$root/scenes/cornell_box.obj" "${long[@]}"
+status=$?
 if [[ $status -eq 143 && -f whole.partial.exr && ! -f whole.exr ]]; then
   run "$pt" render "$root/scenes/cornell_box.obj" "${long[@]}" --resume whole.partial.exr -o whole.exr
   run "$pt" render "$root/scenes/cornell_box.obj" "${long[@]}" -o never_stopped.exr
