@@ -613,6 +613,60 @@ def glass():
     g.write("glass.gltf")
 
 
+def volume(lit=True):
+    """KHR_materials_volume's absorption and the specular and transmission textures (issue 28) on
+    spheres over a floor, before a striped wall, under a point light and a directional light
+    (lit), or under the default white environment (volume_white.gltf, the Cycles crosscheck's
+    case): from the left clear glass, amber glass (attenuation colour (0.9, 0.5, 0.1) at 0.3),
+    rough deep-green glass (0.2, 0.8, 0.4) at 0.2), glass whose transmission texture (R) cuts it
+    into bands of glass and white Lambert, and a red plastic whose specularTexture (A, a ramp from
+    the top) and specularColorTexture (cyan, white and blue bands) vary its reflection."""
+    g = Gltf()
+    g.d["extensionsUsed"] = ["KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_specular"]
+    floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.6, 0.6, 0.6, 1], "metallicFactor": 0.0,
+                                                            "roughnessFactor": 0.8})
+    g.node(mesh=ground(g, 20, floor), name="Ground")
+    if lit:
+        wall = g.material(name="Wall", pbrMetallicRoughness={"baseColorFactor": [0.2, 0.3, 0.6, 1], "metallicFactor": 0.0,
+                                                              "roughnessFactor": 1.0})
+        stripe = g.material(name="Stripe", pbrMetallicRoughness={"baseColorFactor": [0.9, 0.8, 0.2, 1],
+                                                                  "metallicFactor": 0.0, "roughnessFactor": 1.0})
+        g.node(mesh=quad(g, [(-6, 0, -1.5), (6, 0, -1.5), (6, 3, -1.5), (-6, 3, -1.5)], (0, 0, 1), wall, uv=False),
+               name="Wall")
+        for k in range(-5, 6):
+            x = 0.5 * k
+            g.node(mesh=quad(g, [(x - 0.08, 0, -1.49), (x + 0.08, 0, -1.49), (x + 0.08, 3, -1.49), (x - 0.08, 3, -1.49)],
+                             (0, 0, 1), stripe, uv=False), name=f"Stripe{k + 5}")
+    n = 64
+    bands = g.image(png(n, n, 3, lambda x, y: (255 if (y // 8) % 2 else 0, 0, 0)))
+    spec = g.image(png(n, n, 4, lambda x, y: (255, 255, 255, int(255 * y / (n - 1)))))
+    spec_color = g.image(png(n, n, 3, lambda x, y: [(60, 255, 255), (255, 255, 255), (40, 80, 255)][(x // 16) % 3]))
+    def glass(attenuation=None, **more):
+        v = {"thicknessFactor": 1.0}
+        if attenuation:
+            v["attenuationColor"], v["attenuationDistance"] = attenuation
+        return {"KHR_materials_transmission": dict({"transmissionFactor": 1.0}, **more), "KHR_materials_volume": v}
+    looks = [("Clear", [1, 1, 1], 0.0, glass()),
+             ("Amber", [1, 1, 1], 0.0, glass(([0.9, 0.5, 0.1], 0.3))),
+             ("RoughGreen", [1, 1, 1], 0.2, glass(([0.2, 0.8, 0.4], 0.2))),
+             ("BandedTransmission", [0.8, 0.8, 0.8], 0.0, glass(transmissionTexture={"index": bands})),
+             ("SpecularMaps", [0.6, 0.05, 0.05], 0.25, {"KHR_materials_specular": {
+                 "specularFactor": 1.0, "specularTexture": {"index": spec},
+                 "specularColorFactor": [2.0, 2.0, 2.0], "specularColorTexture": {"index": spec_color}}})]
+    for k, (name, color, rough, ext) in enumerate(looks):
+        m = g.material(name=name, pbrMetallicRoughness={"baseColorFactor": color + [1], "metallicFactor": 0.0,
+                                                          "roughnessFactor": rough}, extensions=ext)
+        g.node(mesh=sphere(g, 0.45, m, uv=True), translation=[-2.0 + k, 0.45, 0.0], name=name)
+    if lit:
+        lamp = g.light(type="point", color=[1.0, 0.95, 0.9], intensity=6000.0, name="Lamp")
+        g.node(extensions={"KHR_lights_punctual": {"light": lamp}}, translation=[1.0, 3.0, 2.0], name="LampNode")
+        sun = g.light(type="directional", color=[0.8, 0.85, 1.0], intensity=1000.0, name="Sun")
+        g.node(extensions={"KHR_lights_punctual": {"light": sun}}, rotation=look_at_quaternion([0, 0, 0], [-1.0, -2.0, -1.5]),
+               name="SunNode")
+    camera_node(g, [0.0, 1.2, 6.0], [0.0, 0.5, 0.0], 30.0, aspect=2.0)
+    g.write("volume.gltf" if lit else "volume_white.gltf")
+
+
 if __name__ == "__main__":
     os.makedirs(HERE, exist_ok=True)
     spheres()
@@ -630,3 +684,5 @@ if __name__ == "__main__":
     glass()
     clearcoat()
     clearcoat(lit=False)
+    volume()
+    volume(lit=False)

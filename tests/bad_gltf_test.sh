@@ -59,6 +59,11 @@ mutate plane_point.gltf bad_clearcoat.gltf 'd["materials"][0]["extensions"] = {"
 mutate plane_point.gltf nan_clearcoat.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_clearcoat": {"clearcoatRoughnessFactor": "NaN"}}'
 mutate plane_point.gltf clearcoat_texture.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_clearcoat": {"clearcoatFactor": 1, "clearcoatTexture": {"index": 7}}}'
 mutate clearcoat.gltf clearcoat_normal_scale.gltf '[m for m in d["materials"] if m["name"] == "TexturedCoat"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatNormalTexture"]["scale"] = 1e9'
+mutate plane_point.gltf volume_thickness.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 1}, "KHR_materials_volume": {"thicknessFactor": -1}}'
+mutate plane_point.gltf volume_distance.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 1}, "KHR_materials_volume": {"thicknessFactor": 1, "attenuationDistance": 0}}'
+mutate plane_point.gltf volume_color.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 1}, "KHR_materials_volume": {"thicknessFactor": 1, "attenuationColor": [1, "NaN", 0]}}'
+mutate plane_point.gltf transmission_texture.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 1, "transmissionTexture": {"index": 9}}}'
+mutate plane_point.gltf specular_texture.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_specular": {"specularColorTexture": {"index": -1}}}'
 mutate plane_point.gltf thin_walled.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 0.5}}'
 mutate plane_point.gltf lines.gltf 'd["meshes"][0]["primitives"][0]["mode"] = 1'
 mkdir -p lonely && cp "$gltf/bin_and_image.gltf" lonely/
@@ -91,7 +96,12 @@ check gltf_bad_clearcoat 1 'extensions.KHR_materials_clearcoat.clearcoatFactor 1
 check gltf_nan_clearcoat 1 'extensions.KHR_materials_clearcoat.clearcoatRoughnessFactor must be a number, found "NaN"' render nan_clearcoat.gltf -o out/a.exr
 check gltf_clearcoat_texture 1 'extensions.KHR_materials_clearcoat.clearcoatTexture.index: texture 7 does not exist' render clearcoat_texture.gltf -o out/a.exr
 check gltf_clearcoat_normal_scale 1 'KHR_materials_clearcoat clearcoatNormalTexture: scale 1e+09 is beyond +-1e6' render clearcoat_normal_scale.gltf -o out/a.exr
-check gltf_thin_walled 0 'without KHR_materials_volume the surface is thin-walled' render thin_walled.gltf -spp 1 --res 8x8 -o out/a.exr
+check gltf_volume_thickness 1 'extensions.KHR_materials_volume.thicknessFactor -1 must be a number' render volume_thickness.gltf -o out/a.exr
+check gltf_volume_distance 1 'extensions.KHR_materials_volume.attenuationDistance 0 must be a number' render volume_distance.gltf -o out/a.exr
+check gltf_volume_color 1 'extensions.KHR_materials_volume.attenuationColor must be an array of 3 numbers' render volume_color.gltf -o out/a.exr
+check gltf_transmission_texture 1 'extensions.KHR_materials_transmission.transmissionTexture.index: texture 9 does not exist' render transmission_texture.gltf -o out/a.exr
+check gltf_specular_texture 1 'extensions.KHR_materials_specular.specularColorTexture.index' render specular_texture.gltf -o out/a.exr
+check gltf_thin_walled 0 'without KHR_materials_volume (or with thicknessFactor 0) the surface is thin-walled' render thin_walled.gltf -spp 1 --res 8x8 -o out/a.exr
 check gltf_lines 0 '1 point or line primitives skipped' render lines.gltf -spp 1 --res 8x8 -o out/a.exr
 check gltf_missing_bin 1 'lonely/bin_and_image.gltf: buffer 0: "lonely/bin_and_image.bin" cannot be opened: No such file or directory' render lonely/bin_and_image.gltf -o out/a.exr
 check gltf_missing_image 1 'material 0 "Checker" baseColorTexture: image 0: texture "no_image/checker.png" not found' render no_image/bin_and_image.gltf -o out/a.exr

@@ -300,6 +300,66 @@ TEST(Gltf, TransmissionInAFurnace) {
     EXPECT_NEAR(centre.mean.y, 1.0f, 0.02f);
 }
 
+// KHR_materials_volume's absorption, Beer-Lambert along the path inside: a slab of ior 1 (no
+// refraction, no Fresnel at normal incidence) and thickness 0.5 in front of an emitter of
+// radiance 1 transmits exp(-sigma 0.5) per channel, sigma from attenuationColor and
+// attenuationDistance as the extension defines it.
+Material absorbingGlass(Spectrum color, float distance) {
+    Material glass;
+    glass.model = MaterialModel::MetalRough;
+    glass.kd = Spectrum(1.0f);
+    glass.metallic = 0.0f;
+    glass.roughness = 0.0f;
+    glass.eta = 1.0f;
+    glass.transparency = 1.0f;
+    glass.volume = true;
+    for (int c = 0; c < 3; ++c) glass.attenuation[c] = -std::log(color[c]) / distance;
+    return glass;
+}
+
+TEST(Gltf, VolumeAbsorbsByBeerLambert) {
+    Scene s = emptyScene(lookAt({0, 0, 5}, {0, 0, 0}, 5));
+    Material wall;
+    wall.kd = Spectrum(0.0f);
+    wall.emission = Spectrum(1.0f);
+    addQuad(s, {-5, -5, -2}, {5, -5, -2}, {5, 5, -2}, {-5, 5, -2}, addMaterial(s, wall));
+    const Spectrum color(0.8f, 0.4f, 0.1f);
+    addBox(s, {-3, -3, -0.5f}, {3, 3, 0}, addMaterial(s, absorbingGlass(color, 2.0f)));
+    Rendered r = render(s, 8, 8, 16);
+    Spectrum expected;
+    for (int c = 0; c < 3; ++c) expected[c] = std::pow(color[c], 0.5f / 2.0f); // exp(-sigma d) = color^(d / distance)
+    // 1e-3: the image's corner rays cross the slab 0.1 % longer than 0.5.
+    expectNear(regionStats(r, 0, 0, 8, 8), expected, 0.0f, 1e-3f, "slab of thickness 0.5, attenuation distance 2");
+
+    // Without the volume (thin-walled, or a clear volume) nothing is absorbed.
+    s.materials[1].volume = false;
+    expectNear(regionStats(render(s, 8, 8, 16), 0, 0, 8, 8), Spectrum(1.0f), 0.0f, 1e-4f, "no volume");
+}
+
+// A next-event shadow ray that starts inside a volume is absorbed along its length: a Lambert
+// floor inside an absorbing box of ior 1, lit by a point light inside it, seen from above. The
+// camera ray travels 1.99 inside and the shadow ray 0.99, so the floor's radiance is the clear
+// box's times exp(-sigma 2.98).
+TEST(Gltf, ShadowRaysInsideAVolumeAreAbsorbed) {
+    auto floorRadiance = [](Spectrum color) {
+        Scene s = emptyScene(lookAt({0, 5, 0}, {0, 0, 0}, {0, 0, -1}, 2));
+        Material floor;
+        floor.kd = Spectrum(0.5f);
+        addQuad(s, {-0.9f, 0.01f, 0.9f}, {0.9f, 0.01f, 0.9f}, {0.9f, 0.01f, -0.9f}, {-0.9f, 0.01f, -0.9f}, addMaterial(s, floor));
+        addBox(s, {-1, 0, -1}, {1, 2, 1}, addMaterial(s, absorbingGlass(color, 1.0f)));
+        SphereLight lamp;
+        lamp.center = Vec3(0, 1, 0);
+        lamp.intensity = Spectrum(1.0f);
+        s.lights.push_back(lamp);
+        return regionStats(render(s, 4, 4, 16), 0, 0, 4, 4).mean;
+    };
+    Spectrum clear = floorRadiance(Spectrum(1.0f));
+    EXPECT_NEAR(clear.x, 0.5f / kPi / sqr(0.99f), 2e-3f) << "kd / pi times I / r^2";
+    const Spectrum color(0.9f, 0.6f, 0.3f);
+    Spectrum absorbed = floorRadiance(color);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(absorbed[c] / clear[c], std::pow(color[c], 2.98f), 2e-3f) << c;
+}
+
 } // namespace
 } // namespace pt::test
 
@@ -378,6 +438,40 @@ TEST(Gltf, ClearcoatIsRead) {
     EXPECT_EQ(t.clearcoatMap.channel, TextureChannel::R);
     EXPECT_EQ(t.clearcoatRoughnessMap.channel, TextureChannel::G);
     EXPECT_TRUE(t.isTextured());
+}
+
+// KHR_materials_volume and the specular and transmission textures as read from volume.gltf:
+// sigma = -ln(attenuationColor) / attenuationDistance, each map with its channel, and neither an
+// "ignored" nor a thin-walled warning.
+TEST(Gltf, VolumeAndExtensionTexturesAreRead) {
+    Warnings w;
+    Scene s = load(kGltf + "volume.gltf", &w);
+    for (const std::string& m : w.messages()) {
+        EXPECT_EQ(m.find("ignored"), std::string::npos) << m;
+        EXPECT_EQ(m.find("thin-walled"), std::string::npos) << m;
+    }
+    auto find = [&](const std::string& name) -> const Material& {
+        for (const Material& m : s.materials)
+            if (m.name == name) return m;
+        ADD_FAILURE() << "no material " << name;
+        return s.materials[0];
+    };
+    EXPECT_TRUE(find("Clear").volume);
+    EXPECT_EQ(find("Clear").attenuation, Spectrum(0.0f));
+    const Material& amber = find("Amber");
+    EXPECT_TRUE(amber.volume);
+    EXPECT_NEAR(amber.attenuation.x, -std::log(0.9f) / 0.3f, 1e-5f);
+    EXPECT_NEAR(amber.attenuation.z, -std::log(0.1f) / 0.3f, 1e-5f);
+    EXPECT_FALSE(find("Floor").volume);
+    const Material& banded = find("BandedTransmission");
+    EXPECT_TRUE(banded.transmissionMap.used());
+    EXPECT_EQ(banded.transmissionMap.channel, TextureChannel::R);
+    const Material& spec = find("SpecularMaps");
+    EXPECT_TRUE(spec.specularMap.used());
+    EXPECT_EQ(spec.specularMap.channel, TextureChannel::Alpha);
+    EXPECT_TRUE(spec.ksMap.used());
+    EXPECT_EQ(spec.ks, Spectrum(2.0f));
+    EXPECT_TRUE(spec.isTextured() && banded.isTextured());
 }
 
 // The analytic case of the issue: a smooth coat over a black base under a uniform white

@@ -196,5 +196,39 @@ TEST(TextureRender, CameraRaysPassCutouts) {
     EXPECT_EQ(one.mean, two.mean);
 }
 
+// The glTF extensions' maps multiply their factors: a sphere whose specularTexture (A),
+// specularColorTexture (RGB) and transmissionTexture (R) are constants renders as the sphere with
+// those constants for factors, sample for sample (the same parameters reach the same BSDF).
+TEST(TextureRender, ExtensionMapsMultiplyTheirFactors) {
+    enum Form { Bare, Factors, Maps };
+    auto sphere = [](Material m, Form form) {
+        Scene s = emptyScene(lookAt({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 30));
+        s.environment.sky = Spectrum(1.0f);
+        s.environment.ground = Spectrum(0.2f);
+        if (form == Maps) {
+            m.specularMap = mapOf(constantTexture(s, {1.0f, 1.0f, 1.0f, 0.25f}, false), TextureChannel::Alpha);
+            m.ksMap = mapOf(constantTexture(s, {0.25f, 0.5f, 1.0f}, true));
+            if (m.transparency > 0.0f) m.transmissionMap = mapOf(constantTexture(s, {0.5f}, false), TextureChannel::R);
+        } else if (form == Factors) {
+            m.specular *= 0.25f;
+            m.ks *= Spectrum(0.25f, 0.5f, 1.0f);
+            m.transparency *= 0.5f;
+        }
+        addIcosphere(s, Vec3(0), 1.0f, 3, addMaterial(s, m), false, true);
+        return render(s, 16, 16, 16).mean;
+    };
+    Material m;
+    m.model = MaterialModel::MetalRough;
+    m.kd = Spectrum(0.5f, 0.4f, 0.3f);
+    m.metallic = 0.0f;
+    m.roughness = 0.09f;
+    m.eta = 2.0f; // F0 0.11, so that the specular colour shows
+    EXPECT_EQ(sphere(m, Factors), sphere(m, Maps)) << "specular and specular colour maps";
+    EXPECT_NE(sphere(m, Factors), sphere(m, Bare)) << "the constants change the image";
+    m.transparency = 1.0f;
+    EXPECT_EQ(sphere(m, Factors), sphere(m, Maps)) << "transmission map";
+    EXPECT_NE(sphere(m, Factors), sphere(m, Bare)) << "the transmission constant changes the image";
+}
+
 } // namespace
 } // namespace pt::test

@@ -411,15 +411,23 @@ private:
 
     // A texture reference inside a material extension (a JSON object, not tinygltf's TextureInfo):
     // an unused map where `key` is absent. A normal texture's scale becomes bumpScale.
-    TextureMap extensionTexture(const tinygltf::Value& ext, const char* key, const std::string& what) {
+    TextureMap extensionTexture(const tinygltf::Value& ext, const char* key, const std::string& what, bool colour = false) {
         if (!ext.Has(key)) return TextureMap{};
         const tinygltf::Value& info = ext.Get(key);
         tinygltf::ExtensionMap extensions;
         if (info.Has("extensions"))
             for (const std::string& name : info.Get("extensions").Keys()) extensions[name] = info.Get("extensions").Get(name);
         int texCoord = info.Has("texCoord") ? info.Get("texCoord").GetNumberAsInt() : 0;
-        TextureMap map = textureMap(info.Get("index").GetNumberAsInt(), texCoord, extensions, false, what);
+        TextureMap map = textureMap(info.Get("index").GetNumberAsInt(), texCoord, extensions, colour, what);
         if (info.Has("scale")) map.bumpScale = normalScale(info.Get("scale").GetNumberAsDouble(), what + ": scale");
+        return map;
+    }
+
+    // A map that reads its texture's alpha, as the extensions' A-channel textures do; a texture
+    // without alpha has alpha 1 everywhere, so the map is dropped and its factor alone applies.
+    TextureMap alphaOf(TextureMap map) const {
+        if (!map.used() || !(*scene_.textures)[map.texture].hasAlpha()) return TextureMap{};
+        map.channel = TextureChannel::Alpha;
         return map;
     }
 
@@ -550,8 +558,8 @@ private:
             m.ks = extensionColor(e->second, "specularColorFactor", Spectrum(1.0f));
             if (!(maxComponent(m.ks) <= 1e6f))
                 throw LoadError(ext + ": specularColorFactor " + shortNumber(maxComponent(m.ks)) + " is beyond 1e6, pt's limit");
-            if (e->second.Has("specularTexture") || e->second.Has("specularColorTexture"))
-                warnOnce(warnedSpecularTexture_, ext + ": specularTexture and specularColorTexture are ignored (their factors apply)");
+            m.specularMap = alphaOf(extensionTexture(e->second, "specularTexture", ext + " specularTexture"));
+            m.ksMap = extensionTexture(e->second, "specularColorTexture", ext + " specularColorTexture", true);
         }
         if (auto e = g.extensions.find("KHR_materials_clearcoat"); e != g.extensions.end()) {
             // Ranges and texture indices were checked with the document (gltf_document.cpp).
@@ -569,21 +577,27 @@ private:
         if (auto e = g.extensions.find("KHR_materials_transmission"); e != g.extensions.end()) {
             std::string ext = what + " KHR_materials_transmission";
             m.transparency = extensionNumber(e->second, "transmissionFactor", 0.0f);
-            if (e->second.Has("transmissionTexture"))
-                warnOnce(warnedTransmissionTexture_, ext + ": transmissionTexture is ignored (transmissionFactor applies)");
-            auto volume = g.extensions.find("KHR_materials_volume");
-            if (m.transparency > 0.0f && volume == g.extensions.end())
-                warnOnce(warnedThinWalled_, ext + ": without KHR_materials_volume the surface is thin-walled; pt refracts "
-                                                  "through it with the ior (as Blender's importer does)");
+            if (m.transparency > 0.0f) {
+                m.transmissionMap = extensionTexture(e->second, "transmissionTexture", ext + " transmissionTexture");
+                m.transmissionMap.channel = TextureChannel::R;
+            }
         }
         if (m.clearcoat > 0.0f && m.transparency > 0.0f)
             warnOnce(warnedCoatOnTransmission_, what + ": KHR_materials_clearcoat on a transmitting material is ignored "
                                                        "(pt's transmission is the lab's refraction tree, without a coat)");
-        if (auto e = g.extensions.find("KHR_materials_volume"); e != g.extensions.end()) {
-            std::string ext = what + " KHR_materials_volume";
-            if (e->second.Has("attenuationDistance"))
-                warnOnce(warnedAttenuation_, ext + ": attenuation (absorption inside the volume) is ignored; the volume is clear");
+        if (auto e = g.extensions.find("KHR_materials_volume"); e != g.extensions.end() && m.transparency > 0.0f) {
+            // Ranges were checked with the document. A thickness above 0 makes the mesh a volume's
+            // boundary; the thickness itself (and its texture) serves renderers without the
+            // geometry: pt measures the distance a path travels inside.
+            m.volume = extensionNumber(e->second, "thicknessFactor", 0.0f) > 0.0f;
+            float distance = extensionNumber(e->second, "attenuationDistance", kInf);
+            Spectrum color = extensionColor(e->second, "attenuationColor", Spectrum(1.0f));
+            if (m.volume && distance < kInf)
+                for (int c = 0; c < 3; ++c) m.attenuation[c] = std::min(-std::log(std::max(color[c], 1e-6f)) / distance, 1e30f);
         }
+        if (m.transparency > 0.0f && !m.volume)
+            warnOnce(warnedThinWalled_, what + ": without KHR_materials_volume (or with thicknessFactor 0) the surface is "
+                                               "thin-walled; pt refracts through it with the ior (as Blender's importer does)");
         if (pbr.baseColorTexture.index >= 0)
             m.kdMap = textureMap(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions,
                                  true, what + " baseColorTexture");
@@ -722,8 +736,8 @@ private:
     size_t skippedPrimitives_ = 0;
     bool warnedColor_ = false, warnedTexCoord_ = false, warnedBrightColors_ = false,
          warnedTangentSign_ = false;
-    bool warnedMixedSets_ = false, warnedSpecularTexture_ = false, warnedTransmissionTexture_ = false, warnedThinWalled_ = false,
-         warnedAttenuation_ = false, warnedCoatOnTransmission_ = false;
+    bool warnedMixedSets_ = false, warnedThinWalled_ = false,
+         warnedCoatOnTransmission_ = false;
     void warnOnce(bool& warned, const std::string& message) {
         if (!warned) warnings_.add(message);
         warned = true;

@@ -27,16 +27,16 @@ inline LabParameters labParameters(const Material& m, const SurfaceInputs& in) {
 // Step 2, glTF model: textures multiply factors; roughness = factor * G, so alpha = factor^2 G^2.
 inline MetalRoughParameters metalRoughParameters(const Material& m, const SurfaceInputs& in) {
     return MetalRoughParameters{m.kd * in.kd,  std::max(0.0f, m.metallic) * in.metallic, m.roughness * sqr(in.roughness),
-                                m.eta,         m.ks,
-                                m.specular,    m.clearcoat * in.clearcoat,
+                                m.eta,         m.ks * in.ks,
+                                m.specular * in.specular, m.clearcoat * in.clearcoat,
                                 m.clearcoatAlpha * sqr(in.clearcoatRoughness)};
 }
 
 // KHR_materials_transmission: the lab tree's FresnelBlend over refraction (with the ior) and
 // Lambert, its refraction tinted by the base colour; metal does not transmit.
-inline LabParameters transmissionParameters(const Material& m, const MetalRoughParameters& p) {
+inline LabParameters transmissionParameters(const Material& m, const MetalRoughParameters& p, const SurfaceInputs& in) {
     LabParameters lab = labParameters(m, p.baseColor, p.baseColor, p.alpha, p.metallic);
-    lab.transparency *= 1.0f - p.metallic;
+    lab.transparency *= in.transmission * (1.0f - p.metallic);
     lab.refractTint = p.baseColor;
     return lab;
 }
@@ -61,7 +61,7 @@ inline ShadingPoint evaluateMaterial(const Material& m, const TextureCache& text
             p.clearcoatNormal = s.frame.toLocal(flip ? -in.clearcoatNormal : in.clearcoatNormal);
             if (!(p.clearcoatNormal.z > 0.0f)) p.clearcoatNormal = Vec3(0.0f, 0.0f, 1.0f);
         }
-        if (transmits) s.bsdf = LabBsdf::make(transmissionParameters(m, p), s.wo.z, hemisphere);
+        if (transmits) s.bsdf = LabBsdf::make(transmissionParameters(m, p, in), s.wo.z, hemisphere);
         else s.bsdf = MetalRoughBsdf::make(p, s.wo);
         return s;
     }

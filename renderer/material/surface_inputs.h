@@ -15,7 +15,9 @@ namespace pt {
 struct SurfaceInputs {
     Vec3 normal{0.0f, 0.0f, 1.0f}; // shading normal after the normal or bump map, on the geometric side of wo
     Spectrum kd{1.0f};              // map_Kd / baseColorTexture times vertex colours
-    Spectrum ks{1.0f};              // map_Ks
+    Spectrum ks{1.0f};              // map_Ks / specularColorTexture
+    float specular = 1.0f;          // specularTexture A
+    float transmission = 1.0f;      // transmissionTexture R
     float roughness = 1.0f;         // map_Pr / metallicRoughness G, in [0, 1] (perceptual: alpha = value^2)
     float metallic = 1.0f;          // map_Pm / metallicRoughness B, in [0, 1]
     float clearcoat = 1.0f;         // clearcoatTexture R
@@ -92,6 +94,9 @@ inline SurfaceInputs fetchSurfaceInputs(const Material& m, const TextureCache& t
     if (m.ksMap.used()) in.ks = textures.color(m.ksMap, sp.uv, sp.footprint);
     if (m.roughnessMap.used()) in.roughness = std::clamp(textures.scalar(m.roughnessMap, sp.uv, sp.footprint), 0.0f, 1.0f);
     if (m.metallicMap.used()) in.metallic = std::clamp(textures.scalar(m.metallicMap, sp.uv, sp.footprint), 0.0f, 1.0f);
+    if (m.specularMap.used()) in.specular = std::clamp(textures.scalar(m.specularMap, sp.uv, sp.footprint), 0.0f, 1.0f);
+    if (m.transmissionMap.used())
+        in.transmission = std::clamp(textures.scalar(m.transmissionMap, sp.uv, sp.footprint), 0.0f, 1.0f);
     return in;
 }
 

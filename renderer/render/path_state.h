@@ -5,6 +5,7 @@
 
 #include "accel/accel.h"
 #include "core/color.h"
+#include "render/medium.h"
 
 namespace pt {
 
@@ -30,6 +31,7 @@ struct PathState {
     // blurs it against the light that varies across it, a bias the crosscheck measured (+0.3 %).
     float coneWidth = 0.0f;
     int depth = 0;            // scattering events so far
+    uint32_t medium = kAir;   // material whose volume the ray travels in (medium.h)
     bool deltaBefore = true;  // camera or delta lobe before this hit: emitters seen count fully
     uint32_t pixel = 0;       // the caller's index of the pixel the path belongs to
     FirstHit first;

@@ -71,7 +71,7 @@ struct Material {
     MaterialModel model = MaterialModel::Lab;
     Spectrum kd{0.7f};            // Lambert reflectance (Kd, diffuseReflectance)
     TextureMap kdMap;             // multiplies kd (map_Kd), with its -s, -o and -clamp options
-    TextureMap ksMap;             // multiplies ks (map_Ks)
+    TextureMap ksMap;             // multiplies ks (map_Ks, glTF specularColorTexture)
     TextureMap roughnessMap;      // perceptual roughness: alpha = value^2 (map_Pr)
     TextureMap metallicMap;       // metallic, replacing Pm (map_Pm)
     TextureMap normalMap;         // tangent-space normal map (norm)
@@ -93,6 +93,10 @@ struct Material {
     TextureMap clearcoatMap;          // R multiplies clearcoat
     TextureMap clearcoatRoughnessMap; // G multiplies the coat's roughness
     TextureMap clearcoatNormalMap;    // the coat's own tangent-space normal map
+    TextureMap specularMap;       // A multiplies specular (glTF specularTexture; its colour is ksMap)
+    TextureMap transmissionMap;   // R multiplies transparency (glTF transmissionTexture)
+    bool volume = false;          // glTF KHR_materials_volume: the mesh bounds a volume that refracting paths enter
+    Spectrum attenuation{0.0f};   // and its absorption coefficient per unit length (0: clear)
     bool vertexColors = false;    // glTF COLOR_0 multiplies kd (Scene::vertexColors)
     Spectrum emission{0.0f};      // emitted radiance, both sides (Ke, emittance)
 
@@ -102,7 +106,7 @@ struct Material {
     bool isTextured() const {
         return kdMap.used() || ksMap.used() || roughnessMap.used() || metallicMap.used() || perturbsNormal() ||
                emissionMap.used() || vertexColors || clearcoatMap.used() || clearcoatRoughnessMap.used() ||
-               clearcoatNormalMap.used();
+               clearcoatNormalMap.used() || specularMap.used() || transmissionMap.used();
     }
 };
 
