@@ -667,6 +667,55 @@ def volume(lit=True):
     g.write("volume.gltf" if lit else "volume_white.gltf")
 
 
+def sheen(lit=True):
+    """KHR_materials_sheen (issue 28) on five spheres over a floor, under an emissive panel and a
+    directional light from behind (the sheen shows at grazing angles), or under the default white
+    environment (sheen_white.gltf, the Cycles crosscheck's case): from the left a red rough
+    dielectric without sheen, the same under a white sheen of roughness 0.3, a dark blue base
+    under a pink velvet sheen (roughness 0.8), a black base under a white sheen of roughness 0.5
+    (the sheen alone), and a sheen whose colour (bands) and roughness (A, a ramp from the top)
+    come from textures over a grey base."""
+    g = Gltf()
+    g.d["extensionsUsed"] = ["KHR_materials_sheen"]
+    floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0.0,
+                                                            "roughnessFactor": 0.9})
+    g.node(mesh=ground(g, 20, floor), name="Ground")
+    n = 64
+    colour = g.image(png(n, n, 3, lambda x, y: [(255, 230, 120), (120, 200, 255)][(x // 8) % 2]))
+    rough = g.image(png(n, n, 4, lambda x, y: (255, 255, 255, 20 + int(235 * y / (n - 1)))))
+    red = {"baseColorFactor": [0.6, 0.08, 0.08, 1], "metallicFactor": 0.0, "roughnessFactor": 0.8}
+    looks = [("Red", red, {}),
+             ("RedSheen", red, {"sheenColorFactor": [1.0, 1.0, 1.0], "sheenRoughnessFactor": 0.3}),
+             ("Velvet", {"baseColorFactor": [0.05, 0.05, 0.3, 1], "metallicFactor": 0.0, "roughnessFactor": 1.0},
+              {"sheenColorFactor": [1.0, 0.4, 0.7], "sheenRoughnessFactor": 0.8}),
+             ("SheenAlone", {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0, "roughnessFactor": 1.0},
+              {"sheenColorFactor": [1.0, 1.0, 1.0], "sheenRoughnessFactor": 0.5}),
+             ("TexturedSheen", {"baseColorFactor": [0.3, 0.3, 0.3, 1], "metallicFactor": 0.0, "roughnessFactor": 0.9},
+              {"sheenColorFactor": [1.0, 1.0, 1.0], "sheenColorTexture": {"index": colour},
+               "sheenRoughnessFactor": 1.0, "sheenRoughnessTexture": {"index": rough}})]
+    for k, (name, pbr, ext) in enumerate(looks):
+        extensions = {"KHR_materials_sheen": ext} if ext else {}
+        if name == "SheenAlone":
+            extensions["KHR_materials_specular"] = {"specularFactor": 0.0}
+            g.d["extensionsUsed"].append("KHR_materials_specular")
+        m = g.material(name=name, pbrMetallicRoughness=pbr, extensions=extensions)
+        g.node(mesh=sphere(g, 0.45, m, uv=True), translation=[-2.0 + k, 0.45, 0.0], name=name)
+    if not lit:
+        camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.45, 0.0], 30.0, aspect=2.0)
+        g.write("sheen_white.gltf")
+        return
+    panel = g.material(name="Panel", pbrMetallicRoughness={"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0},
+                       emissiveFactor=[1.0, 0.95, 0.85], extensions={"KHR_materials_emissive_strength": {"emissiveStrength": 3.0}})
+    g.d["extensionsUsed"].append("KHR_materials_emissive_strength")
+    g.node(mesh=quad(g, [(-2.5, 2.5, 1.0), (2.5, 2.5, 1.0), (2.5, 2.5, 2.5), (-2.5, 2.5, 2.5)], (0, -1, 0), panel, uv=False),
+           name="Panel")
+    sun = g.light(type="directional", color=[1.0, 0.95, 0.9], intensity=600.0, name="BackLight")
+    g.node(extensions={"KHR_lights_punctual": {"light": sun}}, rotation=look_at_quaternion([0, 0, 0], [0.4, -0.6, 1.5]),
+           name="BackLightNode")
+    camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.45, 0.0], 30.0, aspect=2.0)
+    g.write("sheen.gltf")
+
+
 if __name__ == "__main__":
     os.makedirs(HERE, exist_ok=True)
     spheres()
@@ -686,3 +735,5 @@ if __name__ == "__main__":
     clearcoat(lit=False)
     volume()
     volume(lit=False)
+    sheen()
+    sheen(lit=False)

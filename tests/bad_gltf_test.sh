@@ -44,7 +44,7 @@ mutate plane_point.gltf cycle.gltf 'd["nodes"][0]["children"] = [0]'
 mutate plane_point.gltf bad_node.gltf 'd["scenes"][0]["nodes"].append(42)'
 mutate plane_point.gltf draco.gltf 'd["extensionsRequired"] = ["KHR_draco_mesh_compression"]; d["extensionsUsed"] = ["KHR_draco_mesh_compression"]'
 mutate plane_point.gltf meshopt.gltf 'd["extensionsRequired"] = ["EXT_meshopt_compression"]; d["extensionsUsed"] = ["EXT_meshopt_compression"]'
-mutate plane_point.gltf used_only.gltf 'd["extensionsUsed"] = ["KHR_materials_sheen"]'
+mutate plane_point.gltf used_only.gltf 'd["extensionsUsed"] = ["KHR_materials_iridescence"]'
 mutate plane_point.gltf bad_stride.gltf 'd["bufferViews"][0]["byteStride"] = 4'
 mutate plane_point.gltf view_past_buffer.gltf 'd["bufferViews"][0]["byteLength"] = 1 << 20'
 mutate plane_point.gltf bad_alpha_mode.gltf 'd["materials"][0]["alphaMode"] = "CUTOUT"'
@@ -64,6 +64,9 @@ mutate plane_point.gltf volume_distance.gltf 'd["materials"][0]["extensions"] = 
 mutate plane_point.gltf volume_color.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 1}, "KHR_materials_volume": {"thicknessFactor": 1, "attenuationColor": [1, "NaN", 0]}}'
 mutate plane_point.gltf transmission_texture.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 1, "transmissionTexture": {"index": 9}}}'
 mutate plane_point.gltf specular_texture.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_specular": {"specularColorTexture": {"index": -1}}}'
+mutate plane_point.gltf sheen_color.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_sheen": {"sheenColorFactor": [1, 2, 0]}}'
+mutate plane_point.gltf sheen_roughness.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_sheen": {"sheenColorFactor": [1, 1, 1], "sheenRoughnessFactor": "NaN"}}'
+mutate plane_point.gltf sheen_texture.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_sheen": {"sheenColorFactor": [1, 1, 1], "sheenRoughnessTexture": {"index": 3}}}'
 mutate plane_point.gltf thin_walled.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 0.5}}'
 mutate plane_point.gltf lines.gltf 'd["meshes"][0]["primitives"][0]["mode"] = 1'
 mkdir -p lonely && cp "$gltf/bin_and_image.gltf" lonely/
@@ -81,7 +84,7 @@ check gltf_cycle 1 'node 0 is reached twice in the node hierarchy' render cycle.
 check gltf_bad_node 1 'node 42 does not exist' render bad_node.gltf -o out/a.exr
 check gltf_draco 1 'requires the extension KHR_draco_mesh_compression, which pt does not support' render draco.gltf -o out/a.exr
 check gltf_meshopt 1 'requires the extension EXT_meshopt_compression' render meshopt.gltf -o out/a.exr
-check gltf_used_only 0 'uses the extension KHR_materials_sheen, which pt ignores' render used_only.gltf -spp 1 --res 8x8 -o out/a.exr
+check gltf_used_only 0 'uses the extension KHR_materials_iridescence, which pt ignores' render used_only.gltf -spp 1 --res 8x8 -o out/a.exr
 check gltf_bad_stride 1 'byteStride 4 is below the element size 12' render bad_stride.gltf -o out/a.exr
 check gltf_view_past_buffer 1 'pass the end of buffer 0' render view_past_buffer.gltf -o out/a.exr
 check gltf_bad_alpha_mode 1 'alphaMode "CUTOUT"; expected OPAQUE, MASK or BLEND' render bad_alpha_mode.gltf -o out/a.exr
@@ -101,6 +104,9 @@ check gltf_volume_distance 1 'extensions.KHR_materials_volume.attenuationDistanc
 check gltf_volume_color 1 'extensions.KHR_materials_volume.attenuationColor must be an array of 3 numbers' render volume_color.gltf -o out/a.exr
 check gltf_transmission_texture 1 'extensions.KHR_materials_transmission.transmissionTexture.index: texture 9 does not exist' render transmission_texture.gltf -o out/a.exr
 check gltf_specular_texture 1 'extensions.KHR_materials_specular.specularColorTexture.index' render specular_texture.gltf -o out/a.exr
+check gltf_sheen_color 1 'extensions.KHR_materials_sheen.sheenColorFactor must be an array of 3 numbers' render sheen_color.gltf -o out/a.exr
+check gltf_sheen_roughness 1 'extensions.KHR_materials_sheen.sheenRoughnessFactor must be a number, found "NaN"' render sheen_roughness.gltf -o out/a.exr
+check gltf_sheen_texture 1 'extensions.KHR_materials_sheen.sheenRoughnessTexture.index: texture 3 does not exist' render sheen_texture.gltf -o out/a.exr
 check gltf_thin_walled 0 'without KHR_materials_volume (or with thicknessFactor 0) the surface is thin-walled' render thin_walled.gltf -spp 1 --res 8x8 -o out/a.exr
 check gltf_lines 0 '1 point or line primitives skipped' render lines.gltf -spp 1 --res 8x8 -o out/a.exr
 check gltf_missing_bin 1 'lonely/bin_and_image.gltf: buffer 0: "lonely/bin_and_image.bin" cannot be opened: No such file or directory' render lonely/bin_and_image.gltf -o out/a.exr

@@ -3,10 +3,12 @@
 // default lighting, and the Khronos sample models loading and rendering without NaN.
 #include "accel/accel.h"
 #include "gltf/gltf_loader.h"
+#include "material/sheen.h"
 #include "render/vertex_tangents.h"
 #include "scene/scene_loader.h"
 #include "tests/gltf_brdf_reference.h"
 #include "tests/test_scenes.h"
+
 
 #include <gtest/gtest.h>
 
@@ -438,6 +440,52 @@ TEST(Gltf, ClearcoatIsRead) {
     EXPECT_EQ(t.clearcoatMap.channel, TextureChannel::R);
     EXPECT_EQ(t.clearcoatRoughnessMap.channel, TextureChannel::G);
     EXPECT_TRUE(t.isTextured());
+}
+
+// KHR_materials_sheen as read from sheen.gltf: colour, roughness (the Charlie alpha as given),
+// the colour map (sRGB) and the roughness map's alpha channel, and no "ignored" warning.
+TEST(Gltf, SheenIsRead) {
+    Warnings w;
+    Scene s = load(kGltf + "sheen.gltf", &w);
+    for (const std::string& m : w.messages()) EXPECT_EQ(m.find("ignored"), std::string::npos) << m;
+    auto find = [&](const std::string& name) -> const Material& {
+        for (const Material& m : s.materials)
+            if (m.name == name) return m;
+        ADD_FAILURE() << "no material " << name;
+        return s.materials[0];
+    };
+    EXPECT_EQ(find("Red").sheenColor, Spectrum(0.0f));
+    EXPECT_EQ(find("Velvet").sheenColor, Spectrum(1.0f, 0.4f, 0.7f));
+    EXPECT_NEAR(find("Velvet").sheenRoughness, 0.8f, 1e-6f);
+    const Material& t = find("TexturedSheen");
+    EXPECT_TRUE(t.sheenColorMap.used() && t.sheenRoughnessMap.used());
+    EXPECT_EQ(t.sheenRoughnessMap.channel, TextureChannel::Alpha);
+    EXPECT_TRUE((*s.textures)[t.sheenColorMap.texture].colour) << "sheenColorTexture is sRGB";
+    EXPECT_TRUE(t.isTextured());
+}
+
+// A white sheen over a black base under a uniform white environment reflects the sheen's
+// directional albedo E (material/sheen.h): E(1, alpha) where the sphere faces the camera.
+TEST(Gltf, SheenInAFurnace) {
+    Scene s = whiteFurnace();
+    Material velvet;
+    velvet.model = MaterialModel::MetalRough;
+    velvet.kd = Spectrum(0.0f);
+    velvet.metallic = 0.0f;
+    velvet.roughness = 1.0f;
+    velvet.eta = 1.5f;
+    velvet.specular = 0.0f;
+    velvet.sheenColor = Spectrum(1.0f);
+    velvet.sheenRoughness = 1.0f;
+    addIcosphere(s, Vec3(0), 1.0f, 5, addMaterial(s, velvet), false, true);
+    Rendered r = render(s, 16, 16, 256);
+    const float e = sheenAlbedo(1.0f, 1.0f);
+    EXPECT_NEAR(e, 0.164f, 0.002f);
+    expectNear(regionStats(r, 7, 7, 9, 9), Spectrum(e), 4.0f, 0.03f, "white sheen over black, facing");
+    s.materials[0].sheenColor = Spectrum(0.5f, 0.0f, 0.0f);
+    RegionStats tinted = regionStats(render(s, 16, 16, 256), 7, 7, 9, 9);
+    EXPECT_NEAR(tinted.mean.x, 0.5f * e, 0.03f * e);
+    EXPECT_EQ(tinted.mean.y, 0.0f);
 }
 
 // KHR_materials_volume and the specular and transmission textures as read from volume.gltf:

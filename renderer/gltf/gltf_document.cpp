@@ -456,6 +456,13 @@ private:
             textureInfo(*e, eat, "clearcoatRoughnessTexture");
             textureInfo(*e, eat, "clearcoatNormalTexture");
         }
+        if (const Json* e = extension(m, at, "KHR_materials_sheen")) {
+            At eat = at.inside("extensions.KHR_materials_sheen");
+            numbers(*e, eat, "sheenColorFactor", 3, 0.0, 1.0);
+            textureInfo(*e, eat, "sheenColorTexture");
+            number(*e, eat, "sheenRoughnessFactor", 0.0, 1.0);
+            textureInfo(*e, eat, "sheenRoughnessTexture");
+        }
         if (const Json* e = extension(m, at, "KHR_materials_transmission")) {
             At eat = at.inside("extensions.KHR_materials_transmission");
             number(*e, eat, "transmissionFactor", 0.0, 1.0);

@@ -24,7 +24,8 @@ namespace pt {
 namespace {
 
 constexpr const char* kSupportedExtensions[] = {
-    "KHR_materials_clearcoat", "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_specular",
+    "KHR_materials_clearcoat", "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_sheen",
+    "KHR_materials_specular",
     "KHR_materials_transmission",
     "KHR_materials_volume", "KHR_lights_punctual", "KHR_mesh_quantization", "KHR_texture_transform",
 };
@@ -574,6 +575,16 @@ private:
                 m.clearcoatNormalMap = extensionTexture(e->second, "clearcoatNormalTexture", ext + " clearcoatNormalTexture");
             }
         }
+        if (auto e = g.extensions.find("KHR_materials_sheen"); e != g.extensions.end()) {
+            // Ranges and texture indices were checked with the document.
+            std::string ext = what + " KHR_materials_sheen";
+            m.sheenColor = extensionColor(e->second, "sheenColorFactor", Spectrum(0.0f));
+            m.sheenRoughness = extensionNumber(e->second, "sheenRoughnessFactor", 0.0f);
+            if (maxComponent(m.sheenColor) > 0.0f) {
+                m.sheenColorMap = extensionTexture(e->second, "sheenColorTexture", ext + " sheenColorTexture", true);
+                m.sheenRoughnessMap = alphaOf(extensionTexture(e->second, "sheenRoughnessTexture", ext + " sheenRoughnessTexture"));
+            }
+        }
         if (auto e = g.extensions.find("KHR_materials_transmission"); e != g.extensions.end()) {
             std::string ext = what + " KHR_materials_transmission";
             m.transparency = extensionNumber(e->second, "transmissionFactor", 0.0f);
@@ -582,9 +593,10 @@ private:
                 m.transmissionMap.channel = TextureChannel::R;
             }
         }
-        if (m.clearcoat > 0.0f && m.transparency > 0.0f)
-            warnOnce(warnedCoatOnTransmission_, what + ": KHR_materials_clearcoat on a transmitting material is ignored "
-                                                       "(pt's transmission is the lab's refraction tree, without a coat)");
+        if ((m.clearcoat > 0.0f || maxComponent(m.sheenColor) > 0.0f) && m.transparency > 0.0f)
+            warnOnce(warnedCoatOnTransmission_, what + ": KHR_materials_clearcoat and KHR_materials_sheen on a transmitting "
+                                                       "material are ignored (pt's transmission is the lab's refraction "
+                                                       "tree, without a coat or sheen)");
         if (auto e = g.extensions.find("KHR_materials_volume"); e != g.extensions.end() && m.transparency > 0.0f) {
             // Ranges were checked with the document. A thickness above 0 makes the mesh a volume's
             // boundary; the thickness itself (and its texture) serves renderers without the

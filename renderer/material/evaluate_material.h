@@ -24,12 +24,16 @@ inline LabParameters labParameters(const Material& m, const SurfaceInputs& in) {
                          m.metallicMap.used() ? in.metallic : m.metallic);
 }
 
-// Step 2, glTF model: textures multiply factors; roughness = factor * G, so alpha = factor^2 G^2.
+// Step 2, glTF model: textures multiply factors; roughness = factor * G, so alpha = factor^2 G^2
+// (the sheen's roughness is its alpha as it is).
 inline MetalRoughParameters metalRoughParameters(const Material& m, const SurfaceInputs& in) {
-    return MetalRoughParameters{m.kd * in.kd,  std::max(0.0f, m.metallic) * in.metallic, m.roughness * sqr(in.roughness),
-                                m.eta,         m.ks * in.ks,
-                                m.specular * in.specular, m.clearcoat * in.clearcoat,
-                                m.clearcoatAlpha * sqr(in.clearcoatRoughness)};
+    MetalRoughParameters p{m.kd * in.kd,  std::max(0.0f, m.metallic) * in.metallic, m.roughness * sqr(in.roughness),
+                           m.eta,         m.ks * in.ks,
+                           m.specular * in.specular, m.clearcoat * in.clearcoat,
+                           m.clearcoatAlpha * sqr(in.clearcoatRoughness)};
+    p.sheenColor = m.sheenColor * in.sheenColor;
+    p.sheenRoughness = m.sheenRoughness * in.sheenRoughness;
+    return p;
 }
 
 // KHR_materials_transmission: the lab tree's FresnelBlend over refraction (with the ior) and

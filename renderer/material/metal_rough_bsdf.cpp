@@ -1,5 +1,6 @@
 #include "material/metal_rough_bsdf.h"
 
+#include "material/sheen.h"
 #include "sampling/warp.h"
 
 namespace pt {
@@ -30,17 +31,29 @@ MetalRoughBsdf MetalRoughBsdf::make(const MetalRoughParameters& p, const Vec3& w
         b.coatAlpha = p.clearcoatAlpha > kSmoothAlpha ? p.clearcoatAlpha : 0.0f;
         b.coat = std::clamp(p.clearcoat, 0.0f, 1.0f) * coatFresnel(glm::dot(wo, b.coatNormal));
     }
+    float sheen = 0.0f; // the sheen's albedo at wo
+    if (maxComponent(p.sheenColor) > 0.0f && cosThetaO > 0.0f) {
+        b.sheenColor = p.sheenColor;
+        b.sheenMax = maxComponent(p.sheenColor);
+        b.sheenAlpha = sheenAlphaOf(p.sheenRoughness);
+        b.sheenLambdaO = sheenLambda(cosThetaO, b.sheenAlpha);
+        float e = sheenAlbedo(cosThetaO, b.sheenAlpha);
+        b.sheenScaleO = std::max(0.0f, 1.0f - b.sheenMax * e);
+        sheen = (1.0f - b.coat) * average(p.sheenColor) * e;
+    }
     // Lobe weights at wo, with Fresnel at the normal: the sampling estimate of each lobe's share.
     float w = schlickWeight(cosThetaO);
     Spectrum fd = b.f0 + (Spectrum(1.0f) - b.f0) * w;
     Spectrum fm = baseColor + (Spectrum(1.0f) - baseColor) * w;
-    float specular = (1.0f - b.coat) * ((1.0f - b.metallic) * b.specular * average(fd) + b.metallic * average(fm));
-    float diffuse = (1.0f - b.coat) * (1.0f - b.metallic) * (1.0f - b.specular * maxComponent(fd)) * average(baseColor);
-    float sum = specular + diffuse + b.coat;
+    const float base = (1.0f - b.coat) * b.sheenScaleO;
+    float specular = base * ((1.0f - b.metallic) * b.specular * average(fd) + b.metallic * average(fm));
+    float diffuse = base * (1.0f - b.metallic) * (1.0f - b.specular * maxComponent(fd)) * average(baseColor);
+    float sum = specular + diffuse + b.coat + sheen;
     if (cosThetaO > 0.0f && sum > 0.0f) {
         b.pSpecular = specular / sum;
         b.pDiffuse = diffuse / sum;
         b.pCoat = b.coat / sum;
+        b.pSheen = sheen / sum;
     }
     return b;
 }
@@ -52,7 +65,10 @@ Spectrum MetalRoughBsdf::evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) con
     float vh = glm::dot(wo, h);
     float w = schlickWeight(vh);
     Spectrum fd = f0 + (Spectrum(1.0f) - f0) * w;
-    const float base = 1.0f - coat;
+    // The base under the sheen's albedo-scaling (the smaller of the two directions' scalings:
+    // reciprocal) and under the coat.
+    float base = 1.0f - coat;
+    if (sheenMax > 0.0f) base *= std::min(sheenScaleO, std::max(0.0f, 1.0f - sheenMax * sheenAlbedo(wi.z, sheenAlpha)));
     Spectrum f = (base * (1.0f - metallic) * (1.0f - specular * maxComponent(fd)) * kInvPi * wi.z) * baseColor;
     pdf = pDiffuse * wi.z * kInvPi;
     if (!smooth() && h.z > 0.0f) {
@@ -61,6 +77,10 @@ Spectrum MetalRoughBsdf::evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) con
         float s = ggxD(h, alpha) * smithG2HeightCorrelated(wo, wi, h, alpha) / (4.0f * wo.z);
         f += (base * s) * ((1.0f - metallic) * specular * fd + metallic * fm);
         pdf += pSpecular * visibleNormalPdf(wo, h, alpha) * reflectionJacobian(wi, h);
+    }
+    if (pSheen > 0.0f) {
+        f += ((1.0f - coat) * sheenLobe(wo, wi, h, sheenAlpha, sheenLambdaO)) * sheenColor;
+        pdf += pSheen * uniformHemispherePdf();
     }
     if (pCoat > 0.0f && !coatSmooth()) {
         // In the coat's frame: C |cos theta_i| = D G2 |n.l| / (4 |nc.v| |nc.l|), n the shading normal.
@@ -101,13 +121,15 @@ bool MetalRoughBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) 
             Spectrum fm = baseColor + (Spectrum(1.0f) - baseColor) * w;
             Spectrum lobe = (1.0f - metallic) * specular * (f0 + (Spectrum(1.0f) - f0) * w) + metallic * fm;
             out.wi = Vec3(-wo.x, -wo.y, wo.z);
-            out.weight = lobe * ((1.0f - coat) / pSpecular);
+            out.weight = lobe * ((1.0f - coat) * sheenScaleO / pSpecular); // wi.z = wo.z: both scalings equal
             out.pdf = 0.0f;
             out.delta = true;
             return true;
         }
         Vec3 m = sampleVisibleNormal(wo, alpha, u2);
         out.wi = 2.0f * glm::dot(wo, m) * m - wo;
+    } else if (u1 < pCoat + pSpecular + pSheen) {
+        out.wi = squareToUniformHemisphere(u2); // the sheen's lobe spreads to the horizon
     } else {
         out.wi = squareToCosineHemisphere(u2);
     }

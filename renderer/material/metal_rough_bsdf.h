@@ -15,7 +15,12 @@
 //   C      = D(h) G2(v, l) / (4 |nc.v| |nc.l|),  GGX with the coat's own alpha, about the coat's
 //            own normal nc (its normal map, else the interpolated normal without the base's map)
 //
-// with c the clearcoat weight. Fc is taken at the view direction, so the coated BSDF is not
+// with c the clearcoat weight. KHR_materials_sheen lies between the coat and f, the base scaled
+// by what the sheen's albedo leaves (the extension's albedo-scaling):
+//
+//   sheened = S_sheen + f min(1 - max3(sheenColor) E(v.n), 1 - max3(sheenColor) E(l.n))
+//
+// S_sheen and E in material/sheen.h; reciprocal like f. The coat mixes over `sheened`. Fc is taken at the view direction, so the coated BSDF is not
 // reciprocal (the extension defines it so). A smooth coat (alpha <= kSmoothAlpha) is a delta
 // mirror about nc.
 //
@@ -44,6 +49,8 @@ struct MetalRoughParameters {
     float clearcoat = 0.0f;            // KHR_materials_clearcoat's weight c
     float clearcoatAlpha = 0.0f;       // the coat's GGX alpha
     Vec3 clearcoatNormal{0.0f, 0.0f, 1.0f}; // the coat's normal in the shading frame (z: the base's)
+    Spectrum sheenColor{0.0f};         // KHR_materials_sheen (black: no sheen)
+    float sheenRoughness = 0.0f;
 };
 
 struct MetalRoughBsdf {
@@ -55,7 +62,12 @@ struct MetalRoughBsdf {
     float coat = 0.0f;     // c Fc(v.nc): the share the clear coat takes, the rest (1 - coat) the base
     float coatAlpha = 0.0f; // 0: smooth (delta) coat
     Vec3 coatNormal{0.0f, 0.0f, 1.0f};
-    float pSpecular = 0.0f, pDiffuse = 0.0f, pCoat = 0.0f;
+    Spectrum sheenColor{0.0f};
+    float sheenMax = 0.0f;      // max3(sheenColor); 0: no sheen
+    float sheenAlpha = 1.0f;
+    float sheenLambdaO = 0.0f;  // the visibility's Lambda at wo
+    float sheenScaleO = 1.0f;   // 1 - sheenMax E(wo.z): the base's scaling seen from wo
+    float pSpecular = 0.0f, pDiffuse = 0.0f, pCoat = 0.0f, pSheen = 0.0f;
 
     // The BRDF for outgoing direction wo (local).
     static MetalRoughBsdf make(const MetalRoughParameters& p, const Vec3& wo);
@@ -71,9 +83,9 @@ struct MetalRoughBsdf {
     bool smooth() const { return alpha <= 0.0f; }
     bool coatSmooth() const { return coatAlpha <= 0.0f; }
     bool hasNonDelta() const {
-        return pDiffuse > 0.0f || (!smooth() && pSpecular > 0.0f) || (!coatSmooth() && pCoat > 0.0f);
+        return pDiffuse > 0.0f || pSheen > 0.0f || (!smooth() && pSpecular > 0.0f) || (!coatSmooth() && pCoat > 0.0f);
     }
-    bool isBlack() const { return pSpecular + pDiffuse + pCoat == 0.0f; }
+    bool isBlack() const { return pSpecular + pDiffuse + pCoat + pSheen == 0.0f; }
     // The colour of the surface, for the albedo AOV: diffuse for dielectrics, F0 for metals.
     Spectrum albedo() const { return baseColor; }
 

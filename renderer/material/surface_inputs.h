@@ -18,6 +18,8 @@ struct SurfaceInputs {
     Spectrum ks{1.0f};              // map_Ks / specularColorTexture
     float specular = 1.0f;          // specularTexture A
     float transmission = 1.0f;      // transmissionTexture R
+    Spectrum sheenColor{1.0f};      // sheenColorTexture
+    float sheenRoughness = 1.0f;    // sheenRoughnessTexture A
     float roughness = 1.0f;         // map_Pr / metallicRoughness G, in [0, 1] (perceptual: alpha = value^2)
     float metallic = 1.0f;          // map_Pm / metallicRoughness B, in [0, 1]
     float clearcoat = 1.0f;         // clearcoatTexture R
@@ -97,6 +99,9 @@ inline SurfaceInputs fetchSurfaceInputs(const Material& m, const TextureCache& t
     if (m.specularMap.used()) in.specular = std::clamp(textures.scalar(m.specularMap, sp.uv, sp.footprint), 0.0f, 1.0f);
     if (m.transmissionMap.used())
         in.transmission = std::clamp(textures.scalar(m.transmissionMap, sp.uv, sp.footprint), 0.0f, 1.0f);
+    if (m.sheenColorMap.used()) in.sheenColor = textures.color(m.sheenColorMap, sp.uv, sp.footprint);
+    if (m.sheenRoughnessMap.used())
+        in.sheenRoughness = std::clamp(textures.scalar(m.sheenRoughnessMap, sp.uv, sp.footprint), 0.0f, 1.0f);
     return in;
 }
 

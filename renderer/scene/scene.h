@@ -95,6 +95,10 @@ struct Material {
     TextureMap clearcoatNormalMap;    // the coat's own tangent-space normal map
     TextureMap specularMap;       // A multiplies specular (glTF specularTexture; its colour is ksMap)
     TextureMap transmissionMap;   // R multiplies transparency (glTF transmissionTexture)
+    Spectrum sheenColor{0.0f};    // glTF KHR_materials_sheen (black: no sheen)
+    float sheenRoughness = 0.0f;  // and its roughness (the Charlie distribution's alpha)
+    TextureMap sheenColorMap;     // multiplies sheenColor
+    TextureMap sheenRoughnessMap; // A multiplies sheenRoughness
     bool volume = false;          // glTF KHR_materials_volume: the mesh bounds a volume that refracting paths enter
     Spectrum attenuation{0.0f};   // and its absorption coefficient per unit length (0: clear)
     bool vertexColors = false;    // glTF COLOR_0 multiplies kd (Scene::vertexColors)
@@ -106,7 +110,8 @@ struct Material {
     bool isTextured() const {
         return kdMap.used() || ksMap.used() || roughnessMap.used() || metallicMap.used() || perturbsNormal() ||
                emissionMap.used() || vertexColors || clearcoatMap.used() || clearcoatRoughnessMap.used() ||
-               clearcoatNormalMap.used() || specularMap.used() || transmissionMap.used();
+               clearcoatNormalMap.used() || specularMap.used() || transmissionMap.used() ||
+               sheenColorMap.used() || sheenRoughnessMap.used();
     }
 };
 

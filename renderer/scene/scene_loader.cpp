@@ -95,7 +95,8 @@ static void checkMaps(const Scene& scene, const Material& m) {
         {&m.kdMap, "diffuse or base colour"}, {&m.ksMap, "specular colour"}, {&m.roughnessMap, "roughness"},
         {&m.metallicMap, "metallic"}, {&m.normalMap, "normal"}, {&m.bumpMap, "bump"}, {&m.alphaMap, "coverage"},
         {&m.emissionMap, "emission"}, {&m.clearcoatMap, "clear coat"}, {&m.clearcoatRoughnessMap, "clear coat roughness"},
-        {&m.clearcoatNormalMap, "clear coat normal"}, {&m.specularMap, "specular"}, {&m.transmissionMap, "transmission"}};
+        {&m.clearcoatNormalMap, "clear coat normal"}, {&m.specularMap, "specular"}, {&m.transmissionMap, "transmission"},
+        {&m.sheenColorMap, "sheen colour"}, {&m.sheenRoughnessMap, "sheen roughness"}};
     for (const auto& [map, what] : maps) {
         float peak = std::max({std::abs(map->linear[0].x), std::abs(map->linear[0].y), std::abs(map->linear[1].x),
                                std::abs(map->linear[1].y), std::abs(map->offset.x), std::abs(map->offset.y)});
