@@ -364,5 +364,59 @@ TEST(LabBsdf, RoughReflectionIsReciprocal) {
     }
 }
 
+// A thin wall (glTF transmission without a volume): smooth, the refraction lobe leaves along -wo
+// with the lobe's weight and no radiance scaling; rough, it is the mirror lobe turned through the
+// surface, so it samples its pdf (chi-square on the sphere, both sides), its weights are eval /
+// pdf, and a white thin wall keeps exactly what the rough mirror keeps.
+TEST(LabBsdf, ThinWallPassesUnbent) {
+    LabParameters p;
+    p.kd = Spectrum(0.0f);
+    p.blend = 1.0f;
+    p.r0 = Spectrum(0.04f);
+    p.transparency = 1.0f;
+    p.eta = 1.5f;
+    p.alpha = 0.0f;
+    p.thin = true;
+    for (float cosO : {1.0f, 0.5f, -0.3f}) {
+        Vec3 wo = directionAt(cosO);
+        LabBsdf b = LabBsdf::make(p, wo.z);
+        BsdfSample s;
+        ASSERT_TRUE(b.sample(wo, 0.999f, Vec2(0.5f), s));
+        EXPECT_TRUE(s.delta);
+        EXPECT_EQ(s.wi, -wo);
+        EXPECT_EQ(s.radianceScale, 1.0f);
+        float f = 0.04f + 0.96f * std::pow(1.0f - std::abs(cosO), 5.0f);
+        EXPECT_NEAR(s.weight.x * b.pRefract, 1.0f - f, 1e-5f) << "cos " << cosO;
+    }
+    for (float alpha : {0.1f, 0.5f})
+        for (float cosO : {0.9f, 0.4f, -0.6f}) {
+            p.alpha = alpha;
+            Vec3 wo = directionAt(cosO);
+            LabBsdf b = LabBsdf::make(p, wo.z);
+            Pcg32 rng(3, 5);
+            bool weightsOk = true;
+            double through = 0.0, mirrored = 0.0;
+            auto r = chiSquareDirections(
+                [&](Vec2 u, Vec3& wi) {
+                    BsdfSample s;
+                    if (!b.sample(wo, rng.nextFloat(), u, s)) return false;
+                    float pdf = b.pdf(wo, s.wi);
+                    Spectrum f = b.eval(wo, s.wi);
+                    if (std::abs(pdf - s.pdf) > 1e-4f * pdf || glm::length(s.weight - f / pdf) > 1e-4f * glm::length(s.weight))
+                        weightsOk = false;
+                    (s.wi.z * wo.z < 0.0f ? through : mirrored) += s.weight.x;
+                    wi = s.wi;
+                    return true;
+                },
+                [&](const Vec3& wi) { return double(b.pdf(wo, wi)); }, 100000);
+            EXPECT_TRUE(r.pass) << "alpha " << alpha << " cos " << cosO << ": " << r.report;
+            EXPECT_TRUE(weightsOk) << "alpha " << alpha << " cos " << cosO;
+            // Turned through the wall, the lobe keeps the mirror's energy: transmitted over
+            // reflected is the lobes' weight ratio.
+            EXPECT_NEAR(through / mirrored, average(b.refract) / average(b.mirror), 0.03 * average(b.refract) / average(b.mirror))
+                << "alpha " << alpha << " cos " << cosO;
+        }
+}
+
 } // namespace
 } // namespace pt::test

@@ -609,7 +609,8 @@ private:
         }
         if (m.transparency > 0.0f && !m.volume)
             warnOnce(warnedThinWalled_, what + ": without KHR_materials_volume (or with thicknessFactor 0) the surface is "
-                                               "thin-walled; pt refracts through it with the ior (as Blender's importer does)");
+                                               "thin-walled: light passes through it unbent (Blender's importer refracts "
+                                               "it with the ior instead)");
         if (pbr.baseColorTexture.index >= 0)
             m.kdMap = textureMap(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions,
                                  true, what + " baseColorTexture");

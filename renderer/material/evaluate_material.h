@@ -36,12 +36,14 @@ inline MetalRoughParameters metalRoughParameters(const Material& m, const Surfac
     return p;
 }
 
-// KHR_materials_transmission: the lab tree's FresnelBlend over refraction (with the ior) and
-// Lambert, its refraction tinted by the base colour; metal does not transmit.
+// KHR_materials_transmission: the lab tree's FresnelBlend over refraction (with the ior, or
+// straight through a thin wall where the material bounds no volume) and Lambert, its refraction
+// tinted by the base colour; metal does not transmit.
 inline LabParameters transmissionParameters(const Material& m, const MetalRoughParameters& p, const SurfaceInputs& in) {
     LabParameters lab = labParameters(m, p.baseColor, p.baseColor, p.alpha, p.metallic);
     lab.transparency *= in.transmission * (1.0f - p.metallic);
     lab.refractTint = p.baseColor;
+    lab.thin = !m.volume; // the specification: without a volume the surface is a thin wall
     return lab;
 }
 

@@ -61,10 +61,17 @@ Spectrum LabBsdf::evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) const {
         // visible normal, G1(o) (o.m) D / o.z, times the reflection's Jacobian.
         float d = ggxD(m, alpha), g1o = smithG1(o, m, alpha), om = std::max(0.0f, glm::dot(o, m));
         float g = d * g1o * smithG1(i, m, alpha) / (4.0f * o.z);
-        bool tir = pRefract > 0.0f && totallyReflects(o, m, side.etaRel);
+        bool tir = pRefract > 0.0f && !thin && totallyReflects(o, m, side.etaRel);
         if (pMirror > 0.0f) f += mirror * g;
         if (tir) f += refract * g;
         pdf += (pMirror + (tir ? pRefract : 0.0f)) * (g1o * om * d / o.z) * reflectionJacobian(i, m);
+    } else if (i.z < 0.0f && pRefract > 0.0f && thin) { // the mirror lobe at i turned back through the wall
+        Vec3 r(i.x, i.y, -i.z);
+        Vec3 m = safeNormalize(o + r);
+        if (m.z <= 0.0f) return f;
+        float d = ggxD(m, alpha), g1o = smithG1(o, m, alpha), om = std::max(0.0f, glm::dot(o, m));
+        f += refract * (d * g1o * smithG1(r, m, alpha) / (4.0f * o.z));
+        pdf += pRefract * (g1o * om * d / o.z) * reflectionJacobian(r, m);
     } else if (i.z < 0.0f && pRefract > 0.0f) { // transmission through m = -(o + eta i)
         Vec3 m = safeNormalize(-(o + side.etaRel * i));
         if (m.z < 0.0f) m = -m;
@@ -90,7 +97,11 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
         Vec3 m = sampleVisibleNormal(o, alpha, u2);
         Vec3 i;
         float scale = 1.0f;
-        if (chooseMirror || !refractAbout(o, m, s.etaRel, i)) {
+        if (chooseRefract && thin) {
+            i = reflectAbout(o, m);
+            if (i.z <= 0.0f) return false;
+            i.z = -i.z; // through the wall, unbent
+        } else if (chooseMirror || !refractAbout(o, m, s.etaRel, i)) {
             i = reflectAbout(o, m);
             if (i.z <= 0.0f) return false; // reflected into the surface: lost to single scattering
         } else {
@@ -120,7 +131,10 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
         // compressed into a smaller solid angle, hence the (eta_o / eta_i)^2 factor.
         float etaRel = wo.z > 0.0f ? eta : 1.0f / eta;
         Vec3 wt;
-        if (refractDirection(wo, etaRel, wt)) {
+        if (thin) { // straight through the wall: no bending, no compression of radiance
+            out.wi = -wo;
+            out.weight = refract / pRefract;
+        } else if (refractDirection(wo, etaRel, wt)) {
             out.wi = wt;
             out.radianceScale = 1.0f / (etaRel * etaRel);
             out.weight = refract * (out.radianceScale / pRefract);

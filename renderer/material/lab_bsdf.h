@@ -17,6 +17,8 @@
 //         same (eta_o / eta_i)^2 radiance scaling), or where refraction through m is impossible,
 //         reflect about m with reflectance 1: Walter et al.'s BTDF (eq. 21) with F = 0, plus the
 //         reflection of the totally internally reflecting microfacets.
+//         Thin-walled (glTF transmission without a volume): light crosses a sheet without bending,
+//         so Refr is the mirror lobe reflected through the surface (wi's z negated): smooth, -wo.
 // Both are sampled through the normals visible from wo, so a sample's weight is the lobe weight
 // times G1(wi, m); single scattering loses the energy of paths that would bounce between
 // microfacets (tests/lab_bsdf_test.cpp tabulates how much).
@@ -55,6 +57,7 @@ struct LabParameters {
     float blend = 0.0f, transparency = 0.0f, eta = 1.0f;
     float alpha = 0.001f; // GGX roughness of Spec and Refr; <= kSmoothAlpha: delta lobes
     Spectrum refractTint{1.0f}; // multiplies Refr: white in the lab, the base colour for glTF transmission
+    bool thin = false;          // Refr passes straight through a thin wall (glTF transmission without a volume)
 };
 
 // The parameters of a material whose Kd, after its texture, is `kd`. With Pm (the PBR
@@ -82,6 +85,7 @@ struct LabBsdf {
     float pMirror = 0.0f, pRefract = 0.0f, pDiffuse = 0.0f;
     float eta = 1.0f; // index of refraction inside the surface; the outside is 1
     float alpha = 0.0f; // GGX roughness of the mirror and refraction lobes; 0 when they are smooth
+    bool thin = false;  // Refr is the mirror lobe turned through the surface
     HemisphereSampling hemisphere = HemisphereSampling::Cosine;
 
     bool rough() const { return alpha > 0.0f; }
@@ -126,6 +130,7 @@ inline LabBsdf LabBsdf::make(const LabParameters& m, float cosThetaO, Hemisphere
     LabBsdf b;
     b.eta = m.eta;
     b.alpha = m.alpha > kSmoothAlpha ? m.alpha : 0.0f;
+    b.thin = m.thin;
     b.hemisphere = hemisphere;
     Spectrum wF = m.blend * schlickFresnel(m.r0, cosThetaO);
     Spectrum rest = Spectrum(1.0f) - wF;

@@ -13,6 +13,10 @@ what the file does not say, as pt does:
 - The Principled BSDF's multiple-scattering GGX is switched to single-scattering GGX, as in the
   glTF BRDF; the rest of the Principled BSDF is not the glTF BRDF (its dielectric Fresnel and
   layering differ), which is what the check measures first on simple cases.
+- KHR_materials_volume: the importer gives Cycles' Volume Absorption the attenuation colour c as
+  its colour and 1 / attenuationDistance d as its density, which absorbs (1 - c) / d; the
+  extension's coefficient is -ln(c) / d (c is what is left after d). Reset here to the
+  extension's: density max(-ln c) / d, colour 1 - (-ln c) / (d density), per channel.
 Cycles' biasing defaults are off, as in cycles_lab.py; each pass goes to its own EXR.
 
     cycles_gltf.py FILE --out-dir DIR [--res WxH] [--spp N] [--passes P] [--camera NAME]
@@ -61,6 +65,18 @@ def frame_bounds(scene):
     return obj
 
 
+def to_extension_absorption(node):
+    """Cycles absorbs density * (1 - colour) per unit length; make that -ln(c) / d."""
+    c = list(node.inputs["Color"].default_value)[:3]
+    per_distance = node.inputs["Density"].default_value  # 1 / d as imported
+    sigma = [-math.log(max(x, 1e-6)) * per_distance for x in c]
+    density = max(sigma)
+    node.inputs["Density"].default_value = density
+    if density > 0:
+        node.inputs["Color"].default_value = [*(1 - s / density for s in sigma), 1.0]
+    print(f"volume absorption: colour {c}, 1/d {per_distance} -> sigma {sigma}", file=sys.stderr)
+
+
 def build(path, width, height, camera_name, max_depth):
     scene = new_scene(width, height)
     unbiased_cycles(scene, max_depth)
@@ -70,6 +86,8 @@ def build(path, width, height, camera_name, max_depth):
         for n in mat.node_tree.nodes if mat.node_tree else []:
             if n.type == "BSDF_PRINCIPLED":
                 n.distribution = "GGX"
+            if n.type == "VOLUME_ABSORPTION":
+                to_extension_absorption(n)
     lights = [o for o in scene.objects if o.type == "LIGHT"]
     world = bpy.data.worlds.new("pt-default")
     if not world.node_tree:
