@@ -67,13 +67,13 @@ inline ShadingPoint evaluateMaterial(const Material& m, const TextureCache& text
             p.clearcoatNormal = s.frame.toLocal(flip ? -in.clearcoatNormal : in.clearcoatNormal);
             if (!(p.clearcoatNormal.z > 0.0f)) p.clearcoatNormal = Vec3(0.0f, 0.0f, 1.0f);
         }
-        if (transmits) s.bsdf = LabBsdf::make(transmissionParameters(m, p, in), s.wo.z, hemisphere);
-        else s.bsdf = MetalRoughBsdf::make(p, s.wo);
+        if (transmits) s.bsdf.initLab(transmissionParameters(m, p, in), s.wo.z, hemisphere);
+        else s.bsdf.initMetalRough(p, s.wo);
         return s;
     }
     s.frame = Frame(n);
     s.wo = s.frame.toLocal(wo);
-    s.bsdf = LabBsdf::make(labParameters(m, in), s.wo.z, hemisphere);
+    s.bsdf.initLab(labParameters(m, in), s.wo.z, hemisphere);
     return s;
 }
 

@@ -90,8 +90,9 @@ struct LabBsdf {
 
     bool rough() const { return alpha > 0.0f; }
 
-    // The tree for outgoing direction cosThetaO = wo.z.
+    // The tree for outgoing direction cosThetaO = wo.z: made, or set in place (every field).
     static LabBsdf make(const LabParameters& p, float cosThetaO, HemisphereSampling hemisphere = HemisphereSampling::Cosine);
+    void init(const LabParameters& p, float cosThetaO, HemisphereSampling hemisphere);
     // Same for a material whose Kd, after its texture, is `kd` (tests; the renderer goes through
     // evaluate_material.h).
     static LabBsdf make(const Material& m, const Spectrum& kd, float cosThetaO,
@@ -126,8 +127,8 @@ inline Spectrum schlickFresnel(const Spectrum& r0, float cosTheta) {
 
 // Inline, so that the lobes are built where the caller keeps them: a LabBsdf returned from
 // another file was copied twice on its way into a Bsdf, each copy a failed store forwarding.
-inline LabBsdf LabBsdf::make(const LabParameters& m, float cosThetaO, HemisphereSampling hemisphere) {
-    LabBsdf b;
+inline void LabBsdf::init(const LabParameters& m, float cosThetaO, HemisphereSampling hemisphere) {
+    LabBsdf& b = *this;
     b.eta = m.eta;
     b.alpha = m.alpha > kSmoothAlpha ? m.alpha : 0.0f;
     b.thin = m.thin;
@@ -140,11 +141,14 @@ inline LabBsdf LabBsdf::make(const LabParameters& m, float cosThetaO, Hemisphere
 
     float am = average(b.mirror), at = average(b.refract), ad = average(b.diffuse);
     float sum = am + at + ad;
-    if (sum > 0.0f) {
-        b.pMirror = am / sum;
-        b.pRefract = at / sum;
-        b.pDiffuse = ad / sum;
-    }
+    const bool any = sum > 0.0f;
+    b.pMirror = any ? am / sum : 0.0f;
+    b.pRefract = any ? at / sum : 0.0f;
+    b.pDiffuse = any ? ad / sum : 0.0f;
+}
+inline LabBsdf LabBsdf::make(const LabParameters& m, float cosThetaO, HemisphereSampling hemisphere) {
+    LabBsdf b;
+    b.init(m, cosThetaO, hemisphere);
     return b;
 }
 

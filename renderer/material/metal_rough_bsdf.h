@@ -63,14 +63,13 @@ struct MetalRoughBsdf {
     float coatAlpha = 0.0f; // 0: smooth (delta) coat
     Vec3 coatNormal{0.0f, 0.0f, 1.0f};
     Spectrum sheenColor{0.0f};
-    float sheenMax = 0.0f;      // max3(sheenColor); 0: no sheen
-    float sheenAlpha = 1.0f;
-    float sheenLambdaO = 0.0f;  // the visibility's Lambda at wo
-    float sheenScaleO = 1.0f;   // 1 - sheenMax E(wo.z): the base's scaling seen from wo
+    float sheenAlpha = 0.0f;    // 0: no sheen
+    float sheenScaleO = 1.0f;   // 1 - max3(sheenColor) E(wo.z): the base's scaling seen from wo
     float pSpecular = 0.0f, pDiffuse = 0.0f, pCoat = 0.0f, pSheen = 0.0f;
 
-    // The BRDF for outgoing direction wo (local).
+    // The BRDF for outgoing direction wo (local): made, or set in place.
     static MetalRoughBsdf make(const MetalRoughParameters& p, const Vec3& wo);
+    void init(const MetalRoughParameters& p, const Vec3& wo);
     // Without a coat only wo's cosine matters.
     static MetalRoughBsdf make(const MetalRoughParameters& p, float cosThetaO) {
         return make(p, Vec3(std::sqrt(std::max(0.0f, 1.0f - cosThetaO * cosThetaO)), 0.0f, cosThetaO));

@@ -73,6 +73,32 @@ inline Vec3 perturbedNormal(const Material& m, const TextureCache& textures, con
     return unitOr(mapped, n);
 }
 
+// The clear coat's inputs and every map's value: out of line, so that the fetch of a plain
+// material (most hits) stays small enough to be inlined into the shade stage.
+[[gnu::noinline]] inline void fetchCoat(const Material& m, const TextureCache& textures, const SurfacePoint& sp,
+                                        const Vec3& wo, SurfaceInputs& in) {
+    // The extension: without its own normal map the coat takes no normal mapping at all.
+    in.clearcoatNormal = m.clearcoatNormalMap.used() ? unitOr(normalFromMap(m.clearcoatNormalMap, textures, sp), sp.ns) : sp.ns;
+    if (glm::dot(wo, in.clearcoatNormal) * glm::dot(wo, sp.ng) <= 0.0f) in.clearcoatNormal = sp.ng;
+    if (m.clearcoatMap.used()) in.clearcoat = std::clamp(textures.scalar(m.clearcoatMap, sp.uv, sp.footprint), 0.0f, 1.0f);
+    if (m.clearcoatRoughnessMap.used())
+        in.clearcoatRoughness = std::clamp(textures.scalar(m.clearcoatRoughnessMap, sp.uv, sp.footprint), 0.0f, 1.0f);
+}
+
+[[gnu::noinline]] inline void fetchMaps(const Material& m, const TextureCache& textures, const SurfacePoint& sp,
+                                        SurfaceInputs& in) {
+    auto unit = [&](const TextureMap& map) { return std::clamp(textures.scalar(map, sp.uv, sp.footprint), 0.0f, 1.0f); };
+    if (m.kdMap.used()) in.kd = textures.color(m.kdMap, sp.uv, sp.footprint);
+    if (m.vertexColors) in.kd *= sp.color;
+    if (m.ksMap.used()) in.ks = textures.color(m.ksMap, sp.uv, sp.footprint);
+    if (m.roughnessMap.used()) in.roughness = unit(m.roughnessMap);
+    if (m.metallicMap.used()) in.metallic = unit(m.metallicMap);
+    if (m.specularMap.used()) in.specular = unit(m.specularMap);
+    if (m.transmissionMap.used()) in.transmission = unit(m.transmissionMap);
+    if (m.sheenColorMap.used()) in.sheenColor = textures.color(m.sheenColorMap, sp.uv, sp.footprint);
+    if (m.sheenRoughnessMap.used()) in.sheenRoughness = unit(m.sheenRoughnessMap);
+}
+
 // Reads every map of `m` at the hit. `wo` points back along the arriving ray. Textured materials
 // need `sp`'s texture coordinates (addTextureCoordinates).
 inline SurfaceInputs fetchSurfaceInputs(const Material& m, const TextureCache& textures, const SurfacePoint& sp,
@@ -82,26 +108,8 @@ inline SurfaceInputs fetchSurfaceInputs(const Material& m, const TextureCache& t
     // Where interpolated or mapped normals put the viewer behind the surface that the geometry
     // shows (silhouettes of smooth meshes, steep bumps), trust the geometry.
     if (glm::dot(wo, in.normal) * glm::dot(wo, sp.ng) <= 0.0f) in.normal = sp.ng;
-    if (m.clearcoat > 0.0f) {
-        // The extension: without its own normal map the coat takes no normal mapping at all.
-        in.clearcoatNormal = m.clearcoatNormalMap.used() ? unitOr(normalFromMap(m.clearcoatNormalMap, textures, sp), sp.ns) : sp.ns;
-        if (glm::dot(wo, in.clearcoatNormal) * glm::dot(wo, sp.ng) <= 0.0f) in.clearcoatNormal = sp.ng;
-        if (m.clearcoatMap.used()) in.clearcoat = std::clamp(textures.scalar(m.clearcoatMap, sp.uv, sp.footprint), 0.0f, 1.0f);
-        if (m.clearcoatRoughnessMap.used())
-            in.clearcoatRoughness = std::clamp(textures.scalar(m.clearcoatRoughnessMap, sp.uv, sp.footprint), 0.0f, 1.0f);
-    }
-    if (!m.isTextured()) return in;
-    if (m.kdMap.used()) in.kd = textures.color(m.kdMap, sp.uv, sp.footprint);
-    if (m.vertexColors) in.kd *= sp.color;
-    if (m.ksMap.used()) in.ks = textures.color(m.ksMap, sp.uv, sp.footprint);
-    if (m.roughnessMap.used()) in.roughness = std::clamp(textures.scalar(m.roughnessMap, sp.uv, sp.footprint), 0.0f, 1.0f);
-    if (m.metallicMap.used()) in.metallic = std::clamp(textures.scalar(m.metallicMap, sp.uv, sp.footprint), 0.0f, 1.0f);
-    if (m.specularMap.used()) in.specular = std::clamp(textures.scalar(m.specularMap, sp.uv, sp.footprint), 0.0f, 1.0f);
-    if (m.transmissionMap.used())
-        in.transmission = std::clamp(textures.scalar(m.transmissionMap, sp.uv, sp.footprint), 0.0f, 1.0f);
-    if (m.sheenColorMap.used()) in.sheenColor = textures.color(m.sheenColorMap, sp.uv, sp.footprint);
-    if (m.sheenRoughnessMap.used())
-        in.sheenRoughness = std::clamp(textures.scalar(m.sheenRoughnessMap, sp.uv, sp.footprint), 0.0f, 1.0f);
+    if (m.clearcoat > 0.0f) fetchCoat(m, textures, sp, wo, in);
+    if (m.isTextured()) fetchMaps(m, textures, sp, in);
     return in;
 }
 

@@ -91,9 +91,6 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
                 ++counts.shadow;
                 float w = (ls.delta || settings_.lightSampling != LightSampling::Mis) ? 1.0f
                                                                                       : powerHeuristic(pmf * ls.pdf, bsdfPdf);
-                // A shadow ray through the surface travels in the medium beyond it.
-                const bool crosses = glm::dot(ls.wi, sp.ng) * glm::dot(ray.dir, sp.ng) > 0.0f;
-                const uint32_t medium = crosses ? mediumAfterCrossing(path.medium, sp.material, m, ls.wi, sp.ng) : path.medium;
                 ShadowQuery q{Ray{}, 0.0f, -1, slot, path.beta * f * ls.radiance * (w / (pmf * ls.pdf))};
                 const Emitter& em = lights_.emitter(e);
                 bool aimed = true;
@@ -111,7 +108,11 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
                     q.distance = ls.distance;
                     if (em.kind == Emitter::Kind::Sphere) q.skipLight = int(em.index);
                 }
-                if (medium != kAir) q.contribution *= transmittance(scene_.materials[medium].attenuation, q.distance);
+                if (path.medium != kAir || m.volume) { // a shadow ray through the surface travels in the medium beyond it
+                    const bool crosses = glm::dot(ls.wi, sp.ng) * glm::dot(ray.dir, sp.ng) > 0.0f;
+                    const uint32_t medium = crosses ? mediumAfterCrossing(path.medium, sp.material, m, ls.wi, sp.ng) : path.medium;
+                    if (medium != kAir) q.contribution *= transmittance(scene_.materials[medium].attenuation, q.distance);
+                }
                 if (aimed) shadows.push_back(q);
             }
         }
@@ -122,7 +123,7 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
     if (!bsdf.sample(woLocal, u.lobe, u.direction, bs)) return false;
     Vec3 wi = frame.toWorld(bs.wi);
     if ((glm::dot(wi, sp.ng) > 0.0f) != (bs.wi.z > 0.0f)) return false; // see the shadow-ray note
-    if (glm::dot(wi, sp.ng) * glm::dot(ray.dir, sp.ng) > 0.0f)
+    if (m.volume && glm::dot(wi, sp.ng) * glm::dot(ray.dir, sp.ng) > 0.0f) // crossed a volume's surface
         path.medium = mediumAfterCrossing(path.medium, sp.material, m, wi, sp.ng);
     path.beta *= bs.weight;
     path.etaScale *= bs.radianceScale;
