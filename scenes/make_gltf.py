@@ -620,7 +620,8 @@ def volume(lit=True):
     case): from the left clear glass, amber glass (attenuation colour (0.9, 0.5, 0.1) at 0.3),
     rough deep-green glass (0.2, 0.8, 0.4) at 0.2), glass whose transmission texture (R) cuts it
     into bands of glass and white Lambert, and a red plastic whose specularTexture (A, a ramp from
-    the top) and specularColorTexture (cyan, white and blue bands) vary its reflection."""
+    the top) and specularColorTexture (cyan, white and blue bands) vary its reflection; lit, a
+    thin-walled bubble (transmission without a volume) in front."""
     g = Gltf()
     g.d["extensionsUsed"] = ["KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_specular"]
     floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.6, 0.6, 0.6, 1], "metallicFactor": 0.0,
@@ -658,6 +659,11 @@ def volume(lit=True):
                                                           "roughnessFactor": rough}, extensions=ext)
         g.node(mesh=sphere(g, 0.45, m, uv=True), translation=[-2.0 + k, 0.45, 0.0], name=name)
     if lit:
+        # A soap bubble before them: transmission without a volume is a thin wall (unbent).
+        bubble = g.material(name="ThinBubble", pbrMetallicRoughness={"baseColorFactor": [1, 1, 1, 1], "metallicFactor": 0.0,
+                                                                      "roughnessFactor": 0.0},
+                            extensions={"KHR_materials_transmission": {"transmissionFactor": 1.0}})
+        g.node(mesh=sphere(g, 0.3, bubble), translation=[-1.5, 0.3, 1.3], name="ThinBubble")
         lamp = g.light(type="point", color=[1.0, 0.95, 0.9], intensity=6000.0, name="Lamp")
         g.node(extensions={"KHR_lights_punctual": {"light": lamp}}, translation=[1.0, 3.0, 2.0], name="LampNode")
         sun = g.light(type="directional", color=[0.8, 0.85, 1.0], intensity=1000.0, name="Sun")
