@@ -485,6 +485,22 @@ def materials():
     g.write("materials.gltf")
 
 
+def panel_and_sun(g, strength, sun_color, lux, sun_towards, sun_name="Sun"):
+    """The lighting and camera of the extension scenes' spheres: an emissive panel above and in
+    front of them (emissive strength `strength`), a directional light travelling towards
+    `sun_towards`, and the camera."""
+    panel = g.material(name="Panel", pbrMetallicRoughness={"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0},
+                       emissiveFactor=[1.0, 0.95, 0.85],
+                       extensions={"KHR_materials_emissive_strength": {"emissiveStrength": strength}})
+    g.d["extensionsUsed"].append("KHR_materials_emissive_strength")
+    g.node(mesh=quad(g, [(-2.5, 2.5, 1.0), (2.5, 2.5, 1.0), (2.5, 2.5, 2.5), (-2.5, 2.5, 2.5)], (0, -1, 0), panel, uv=False),
+           name="Panel")
+    sun = g.light(type="directional", color=sun_color, intensity=lux, name=sun_name)
+    g.node(extensions={"KHR_lights_punctual": {"light": sun}}, rotation=look_at_quaternion([0, 0, 0], sun_towards),
+           name=sun_name + "Node")
+    camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.45, 0.0], 30.0, aspect=2.0)
+
+
 def clearcoat(lit=True):
     """KHR_materials_clearcoat (issue 28) on five spheres over a floor, under an emissive panel
     and a directional light (lit), or under the default white environment (clearcoat_white.gltf,
@@ -517,16 +533,8 @@ def clearcoat(lit=True):
         camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.45, 0.0], 30.0, aspect=2.0)
         g.write("clearcoat_white.gltf")
         return
-    # An emissive panel above and in front, which the smooth coats mirror (a point light they cannot).
-    panel = g.material(name="Panel", pbrMetallicRoughness={"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0},
-                       emissiveFactor=[1.0, 0.95, 0.85], extensions={"KHR_materials_emissive_strength": {"emissiveStrength": 6.0}})
-    g.d["extensionsUsed"].append("KHR_materials_emissive_strength")
-    g.node(mesh=quad(g, [(-2.5, 2.5, 1.0), (2.5, 2.5, 1.0), (2.5, 2.5, 2.5), (-2.5, 2.5, 2.5)], (0, -1, 0), panel, uv=False),
-           name="Panel")
-    sun = g.light(type="directional", color=[0.8, 0.85, 1.0], intensity=300.0, name="Sun")
-    g.node(extensions={"KHR_lights_punctual": {"light": sun}}, rotation=look_at_quaternion([0, 0, 0], [1.0, -2.0, -1.5]),
-           name="SunNode")
-    camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.45, 0.0], 30.0, aspect=2.0)
+    # The smooth coats mirror the panel (a point light they cannot).
+    panel_and_sun(g, 6.0, [0.8, 0.85, 1.0], 300.0, [1.0, -2.0, -1.5])
     g.write("clearcoat.gltf")
 
 
@@ -710,15 +718,7 @@ def sheen(lit=True):
         camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.45, 0.0], 30.0, aspect=2.0)
         g.write("sheen_white.gltf")
         return
-    panel = g.material(name="Panel", pbrMetallicRoughness={"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0},
-                       emissiveFactor=[1.0, 0.95, 0.85], extensions={"KHR_materials_emissive_strength": {"emissiveStrength": 3.0}})
-    g.d["extensionsUsed"].append("KHR_materials_emissive_strength")
-    g.node(mesh=quad(g, [(-2.5, 2.5, 1.0), (2.5, 2.5, 1.0), (2.5, 2.5, 2.5), (-2.5, 2.5, 2.5)], (0, -1, 0), panel, uv=False),
-           name="Panel")
-    sun = g.light(type="directional", color=[1.0, 0.95, 0.9], intensity=600.0, name="BackLight")
-    g.node(extensions={"KHR_lights_punctual": {"light": sun}}, rotation=look_at_quaternion([0, 0, 0], [0.4, -0.6, 1.5]),
-           name="BackLightNode")
-    camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.45, 0.0], 30.0, aspect=2.0)
+    panel_and_sun(g, 3.0, [1.0, 0.95, 0.9], 600.0, [0.4, -0.6, 1.5], sun_name="BackLight")  # the sun from behind
     g.write("sheen.gltf")
 
 

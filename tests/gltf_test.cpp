@@ -271,6 +271,17 @@ TEST(Gltf, CornellBoxEqualsItsObj) {
 // furnace reflects and refracts all it receives, so it vanishes (radiance 1 everywhere); a rough
 // one loses only what single scattering loses, and the base colour tints what passes.
 // An empty scene seen from (0, 0, 4) under a uniform white environment map (a light: sampled).
+// A glTF metallic-roughness dielectric: base colour kd, GGX alpha, ior eta.
+Material dielectric(Spectrum kd, float alpha, float eta) {
+    Material m;
+    m.model = MaterialModel::MetalRough;
+    m.kd = kd;
+    m.metallic = 0.0f;
+    m.roughness = alpha;
+    m.eta = eta;
+    return m;
+}
+
 Scene whiteFurnace() {
     Scene s = emptyScene(lookAt({0, 0, 4}, {0, 0, 0}, 30));
     auto white = std::make_shared<EnvironmentMap>();
@@ -282,12 +293,7 @@ Scene whiteFurnace() {
 
 TEST(Gltf, TransmissionInAFurnace) {
     Scene s = whiteFurnace();
-    Material glass;
-    glass.model = MaterialModel::MetalRough;
-    glass.kd = Spectrum(1.0f);
-    glass.metallic = 0.0f;
-    glass.roughness = 0.0f;
-    glass.eta = 1.5f;
+    Material glass = dielectric(Spectrum(1.0f), 0.0f, 1.5f);
     glass.transparency = 1.0f;
     glass.volume = true;
     addIcosphere(s, Vec3(0), 1.0f, 4, addMaterial(s, glass), false, true);
@@ -319,12 +325,7 @@ TEST(Gltf, ThinWallTransmitsUnbent) {
         wall.emission = Spectrum(1.0f);
         addQuad(s, {0, -5, -2}, {5, -5, -2}, {5, 5, -2}, {0, 5, -2}, addMaterial(s, wall)); // the right half
         if (sheet) {
-            Material glass;
-            glass.model = MaterialModel::MetalRough;
-            glass.kd = Spectrum(1.0f);
-            glass.metallic = 0.0f;
-            glass.roughness = 0.0f;
-            glass.eta = 1.5f;
+            Material glass = dielectric(Spectrum(1.0f), 0.0f, 1.5f);
             glass.transparency = 1.0f;
             addQuad(s, {-3, -3, -0.5f}, {3, -3, 0.5f}, {3, 3, 0.5f}, {-3, 3, -0.5f}, addMaterial(s, glass)); // tilted
         }
@@ -344,12 +345,7 @@ TEST(Gltf, ThinWallTransmitsUnbent) {
 // radiance 1 transmits exp(-sigma 0.5) per channel, sigma from attenuationColor and
 // attenuationDistance as the extension defines it.
 Material absorbingGlass(Spectrum color, float distance) {
-    Material glass;
-    glass.model = MaterialModel::MetalRough;
-    glass.kd = Spectrum(1.0f);
-    glass.metallic = 0.0f;
-    glass.roughness = 0.0f;
-    glass.eta = 1.0f;
+    Material glass = dielectric(Spectrum(1.0f), 0.0f, 1.0f);
     glass.transparency = 1.0f;
     glass.volume = true;
     for (int c = 0; c < 3; ++c) glass.attenuation[c] = -std::log(color[c]) / distance;
@@ -455,18 +451,21 @@ TEST(Gltf, FileTangentsAreUsed) {
 namespace pt::test {
 namespace {
 
+// The scene's material of that name (the first material, and a failure, where none is).
+const Material& materialNamed(const Scene& s, const std::string& name) {
+    for (const Material& m : s.materials)
+        if (m.name == name) return m;
+    ADD_FAILURE() << "no material " << name;
+    return s.materials[0];
+}
+
 // KHR_materials_clearcoat as read from clearcoat.gltf: factors, alpha = roughness^2, the three
 // maps with their channels, and no "ignored" warning.
 TEST(Gltf, ClearcoatIsRead) {
     Warnings w;
     Scene s = load(kGltf + "clearcoat.gltf", &w);
     for (const std::string& m : w.messages()) EXPECT_EQ(m.find("ignored"), std::string::npos) << m;
-    auto find = [&](const std::string& name) -> const Material& {
-        for (const Material& m : s.materials)
-            if (m.name == name) return m;
-        ADD_FAILURE() << "no material " << name;
-        return s.materials[0];
-    };
+    auto find = [&](const std::string& name) -> const Material& { return materialNamed(s, name); };
     EXPECT_EQ(find("Red").clearcoat, 0.0f);
     EXPECT_EQ(find("RedSmoothCoat").clearcoat, 1.0f);
     EXPECT_EQ(find("RedSmoothCoat").clearcoatAlpha, 0.0f);
@@ -485,12 +484,7 @@ TEST(Gltf, SheenIsRead) {
     Warnings w;
     Scene s = load(kGltf + "sheen.gltf", &w);
     for (const std::string& m : w.messages()) EXPECT_EQ(m.find("ignored"), std::string::npos) << m;
-    auto find = [&](const std::string& name) -> const Material& {
-        for (const Material& m : s.materials)
-            if (m.name == name) return m;
-        ADD_FAILURE() << "no material " << name;
-        return s.materials[0];
-    };
+    auto find = [&](const std::string& name) -> const Material& { return materialNamed(s, name); };
     EXPECT_EQ(find("Red").sheenColor, Spectrum(0.0f));
     EXPECT_EQ(find("Velvet").sheenColor, Spectrum(1.0f, 0.4f, 0.7f));
     EXPECT_NEAR(find("Velvet").sheenRoughness, 0.8f, 1e-6f);
@@ -505,12 +499,7 @@ TEST(Gltf, SheenIsRead) {
 // directional albedo E (material/sheen.h): E(1, alpha) where the sphere faces the camera.
 TEST(Gltf, SheenInAFurnace) {
     Scene s = whiteFurnace();
-    Material velvet;
-    velvet.model = MaterialModel::MetalRough;
-    velvet.kd = Spectrum(0.0f);
-    velvet.metallic = 0.0f;
-    velvet.roughness = 1.0f;
-    velvet.eta = 1.5f;
+    Material velvet = dielectric(Spectrum(0.0f), 1.0f, 1.5f);
     velvet.specular = 0.0f;
     velvet.sheenColor = Spectrum(1.0f);
     velvet.sheenRoughness = 1.0f;
@@ -540,12 +529,7 @@ TEST(Gltf, VolumeAndExtensionTexturesAreRead) {
         }
     }
     EXPECT_EQ(thin, 1);
-    auto find = [&](const std::string& name) -> const Material& {
-        for (const Material& m : s.materials)
-            if (m.name == name) return m;
-        ADD_FAILURE() << "no material " << name;
-        return s.materials[0];
-    };
+    auto find = [&](const std::string& name) -> const Material& { return materialNamed(s, name); };
     EXPECT_TRUE(find("Clear").volume);
     EXPECT_EQ(find("Clear").attenuation, Spectrum(0.0f));
     const Material& amber = find("Amber");
@@ -569,12 +553,7 @@ TEST(Gltf, VolumeAndExtensionTexturesAreRead) {
 // camera; over a white Lambert base it keeps all the light (Fc + (1 - Fc) 1 = 1).
 TEST(Gltf, ClearcoatInAFurnace) {
     Scene s = whiteFurnace();
-    Material coat;
-    coat.model = MaterialModel::MetalRough;
-    coat.kd = Spectrum(0.0f);
-    coat.metallic = 0.0f;
-    coat.roughness = 0.25f;
-    coat.eta = 1.5f;
+    Material coat = dielectric(Spectrum(0.0f), 0.25f, 1.5f);
     coat.specular = 0.0f;
     coat.clearcoat = 1.0f;
     addIcosphere(s, Vec3(0), 1.0f, 5, addMaterial(s, coat), false, true);
