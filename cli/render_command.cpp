@@ -38,7 +38,7 @@ const char* kRenderUsage = R"(usage: pt render SCENE [options]
 Renders SCENE (Wavefront .obj with the lab's extended .mtl, or glTF 2.0 .gltf/.glb) and writes
 one image. glTF: metallic-roughness materials with their textures, alphaMode, KHR_lights_punctual,
 KHR_materials_clearcoat, _sheen, _specular, _transmission (thin-walled without a volume), _volume
-(refraction, Beer-Lambert absorption), _emissive_strength and _ior, each with its textures,
+(refraction, Beer-Lambert absorption), _emissive_strength, _ior and _unlit, each with its textures,
 KHR_texture_transform, KHR_mesh_quantization;
 lights in candela and lux divided by 683 lm/W; without lights, a uniform white environment.
 MTL texture maps: map_Kd, map_Ks (colour), map_Pr, map_Pm, norm, bump/map_bump, map_d (data),

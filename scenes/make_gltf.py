@@ -722,6 +722,36 @@ def sheen(lit=True):
     g.write("sheen.gltf")
 
 
+def unlit():
+    """KHR_materials_unlit (issue 28): an unlit checker billboard and an unlit orange sphere beside a
+    lit grey sphere and a mirror sphere, over a floor under a point light. Only camera rays see an
+    unlit surface (as Blender's importer makes it): it shows its base colour flat, casts no shadow
+    and is missing from the mirror."""
+    g = Gltf()
+    g.d["extensionsUsed"] = ["KHR_materials_unlit"]
+    floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.6, 0.6, 0.6, 1], "metallicFactor": 0.0,
+                                                            "roughnessFactor": 0.8})
+    g.node(mesh=ground(g, 20, floor), name="Ground")
+    n = 64
+    checker = g.image(png(n, n, 3, lambda x, y: (40, 120, 200) if (x // 8 + y // 8) % 2 else (230, 200, 60)))
+    billboard = g.material(name="UnlitBillboard", pbrMetallicRoughness={"baseColorTexture": {"index": checker}},
+                           extensions={"KHR_materials_unlit": {}})
+    g.node(mesh=quad(g, [(-2.4, 0.1, -0.5), (-1.2, 0.1, -0.5), (-1.2, 1.3, -0.5), (-2.4, 1.3, -0.5)], (0, 0, 1), billboard),
+           name="UnlitBillboard")
+    orange = g.material(name="UnlitOrange", pbrMetallicRoughness={"baseColorFactor": [1.0, 0.45, 0.1, 1]},
+                        extensions={"KHR_materials_unlit": {}})
+    grey = g.material(name="Grey", pbrMetallicRoughness={"baseColorFactor": [0.7, 0.7, 0.7, 1], "metallicFactor": 0.0,
+                                                          "roughnessFactor": 0.5})
+    mirror = g.material(name="Mirror", pbrMetallicRoughness={"baseColorFactor": [0.95, 0.95, 0.95, 1], "metallicFactor": 1.0,
+                                                              "roughnessFactor": 0.0})
+    for k, (name, m) in enumerate([("UnlitOrange", orange), ("Grey", grey), ("Mirror", mirror)]):
+        g.node(mesh=sphere(g, 0.45, m), translation=[-0.4 + 1.1 * k, 0.45, 0.0], name=name)
+    lamp = g.light(type="point", color=[1.0, 0.95, 0.9], intensity=4000.0, name="Lamp")
+    g.node(extensions={"KHR_lights_punctual": {"light": lamp}}, translation=[-1.0, 3.0, 2.0], name="LampNode")
+    camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.5, 0.0], 35.0, aspect=2.0)
+    g.write("unlit.gltf")
+
+
 if __name__ == "__main__":
     os.makedirs(HERE, exist_ok=True)
     spheres()
@@ -743,3 +773,4 @@ if __name__ == "__main__":
     volume(lit=False)
     sheen()
     sheen(lit=False)
+    unlit()

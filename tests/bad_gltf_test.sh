@@ -67,6 +67,7 @@ mutate plane_point.gltf specular_texture.gltf 'd["materials"][0]["extensions"] =
 mutate plane_point.gltf sheen_color.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_sheen": {"sheenColorFactor": [1, 2, 0]}}'
 mutate plane_point.gltf sheen_roughness.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_sheen": {"sheenColorFactor": [1, 1, 1], "sheenRoughnessFactor": "NaN"}}'
 mutate plane_point.gltf sheen_texture.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_sheen": {"sheenColorFactor": [1, 1, 1], "sheenRoughnessTexture": {"index": 3}}}'
+mutate plane_point.gltf unlit_value.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_unlit": True}'
 mutate plane_point.gltf thin_walled.gltf 'd["materials"][0]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 0.5}}'
 mutate plane_point.gltf lines.gltf 'd["meshes"][0]["primitives"][0]["mode"] = 1'
 mkdir -p lonely && cp "$gltf/bin_and_image.gltf" lonely/
@@ -107,6 +108,7 @@ check gltf_specular_texture 1 'extensions.KHR_materials_specular.specularColorTe
 check gltf_sheen_color 1 'extensions.KHR_materials_sheen.sheenColorFactor must be an array of 3 numbers' render sheen_color.gltf -o out/a.exr
 check gltf_sheen_roughness 1 'extensions.KHR_materials_sheen.sheenRoughnessFactor must be a number, found "NaN"' render sheen_roughness.gltf -o out/a.exr
 check gltf_sheen_texture 1 'extensions.KHR_materials_sheen.sheenRoughnessTexture.index: texture 3 does not exist' render sheen_texture.gltf -o out/a.exr
+check gltf_unlit_value 1 'extensions.KHR_materials_unlit must be an object' render unlit_value.gltf -o out/a.exr
 check gltf_thin_walled 0 'without KHR_materials_volume (or with thicknessFactor 0) the surface is thin-walled' render thin_walled.gltf -spp 1 --res 8x8 -o out/a.exr
 check gltf_lines 0 '1 point or line primitives skipped' render lines.gltf -spp 1 --res 8x8 -o out/a.exr
 check gltf_missing_bin 1 'lonely/bin_and_image.gltf: buffer 0: "lonely/bin_and_image.bin" cannot be opened: No such file or directory' render lonely/bin_and_image.gltf -o out/a.exr

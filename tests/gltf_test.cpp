@@ -340,6 +340,38 @@ TEST(Gltf, ThinWallTransmitsUnbent) {
         }
 }
 
+// KHR_materials_unlit: camera rays see the base colour and nothing else sees the surface. A quad
+// facing the camera shows kd exactly under a white sky; a quad between a point light and a lit
+// floor, out of the camera's view, changes the image not at all (no shadow, no bounce), where a
+// Lambert quad in its place shadows the floor.
+TEST(Gltf, UnlitIsSeenByCameraRaysOnly) {
+    Material unlit;
+    unlit.model = MaterialModel::MetalRough;
+    unlit.kd = Spectrum(0.8f, 0.2f, 0.1f);
+    unlit.unlit = true;
+    Scene facing = emptyScene(lookAt({0, 0, 5}, {0, 0, 0}, 10));
+    facing.environment.sky = Spectrum(1.0f);
+    addQuad(facing, {-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0}, addMaterial(facing, unlit));
+    expectNear(regionStats(render(facing, 8, 8, 16), 0, 0, 8, 8), unlit.kd, 0.0f, 1e-6f, "an unlit quad seen by the camera");
+
+    auto lit = [](const Material* quad) {
+        Scene s = emptyScene(lookAt({1, 0.5f, 3}, {1, 0, 0}, 30));
+        Material floor;
+        floor.kd = Spectrum(0.5f);
+        addQuad(s, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, {-5, 0, -5}, addMaterial(s, floor));
+        if (quad) addQuad(s, {0.2f, 1, 0.3f}, {0.8f, 1, 0.3f}, {0.8f, 1, -0.3f}, {0.2f, 1, -0.3f}, addMaterial(s, *quad));
+        SphereLight lamp;
+        lamp.center = Vec3(0, 2, 0);
+        lamp.intensity = Spectrum(5.0f);
+        s.lights.push_back(lamp);
+        return render(s, 32, 16, 16).mean;
+    };
+    EXPECT_EQ(lit(&unlit), lit(nullptr)) << "the unlit quad above the view casts no shadow and reflects nothing";
+    Material lambert;
+    lambert.kd = Spectrum(0.8f);
+    EXPECT_NE(lit(&lambert), lit(nullptr)) << "a Lambert quad in its place shadows the floor in view";
+}
+
 // KHR_materials_volume's absorption, Beer-Lambert along the path inside: a slab of ior 1 (no
 // refraction, no Fresnel at normal incidence) and thickness 0.5 in front of an emitter of
 // radiance 1 transmits exp(-sigma 0.5) per channel, sigma from attenuationColor and
@@ -512,6 +544,18 @@ TEST(Gltf, SheenInAFurnace) {
     RegionStats tinted = regionStats(render(s, 16, 16, 256), 7, 7, 9, 9);
     EXPECT_NEAR(tinted.mean.x, 0.5f * e, 0.03f * e);
     EXPECT_EQ(tinted.mean.y, 0.0f);
+}
+
+// KHR_materials_unlit as read from unlit.gltf: flagged, no emission, the billboard's texture
+// kept, and no warning about the extension.
+TEST(Gltf, UnlitIsRead) {
+    Warnings w;
+    Scene s = load(kGltf + "unlit.gltf", &w);
+    for (const std::string& m : w.messages()) EXPECT_EQ(m.find("unlit"), std::string::npos) << m;
+    EXPECT_TRUE(materialNamed(s, "UnlitOrange").unlit);
+    EXPECT_EQ(materialNamed(s, "UnlitOrange").kd, Spectrum(1.0f, 0.45f, 0.1f));
+    EXPECT_TRUE(materialNamed(s, "UnlitBillboard").unlit && materialNamed(s, "UnlitBillboard").kdMap.used());
+    EXPECT_FALSE(materialNamed(s, "Grey").unlit);
 }
 
 // KHR_materials_volume and the specular and transmission textures as read from volume.gltf:

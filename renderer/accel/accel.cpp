@@ -12,11 +12,15 @@ namespace pt {
 namespace {
 
 constexpr unsigned kOpaqueGeometry = 0, kCutoutGeometry = 1, kSphereGeometry = 2;
+constexpr unsigned kCameraRay = 1u << 1, kAnyRay = 0xFFFFFFFFu & ~kCameraRay;
 
 // Triangles of materials with a cutout (map_d) sit in a geometry of their own whose filter
 // function drops hits where the surface is not there; the opaque rest has no filter and pays
 // nothing. Coverage between 0 and 1 is a coin flip keyed on the hit and the ray, so an image does
-// not depend on which thread traced what.
+// not depend on which thread traced what. Unlit materials (glTF KHR_materials_unlit) sit there
+// too: only camera rays see them, as Blender's importer has it; every other ray passes.
+// Camera rays carry kCameraRay in their mask (every geometry's mask is all ones, so masks
+// select nothing else).
 struct Cutouts {
     const Scene* scene = nullptr;
     std::vector<uint32_t> triangle; // primitive of the cutout geometry -> scene triangle
@@ -49,6 +53,11 @@ void cutoutFilter(const RTCFilterFunctionNArguments* args) {
         uint32_t tri = cut->triangle[RTCHitN_primID(args->hit, args->N, i)];
         float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
         const Material& m = scene.materials[scene.triMaterial[tri]];
+        if (m.unlit && !(RTCRayN_mask(args->ray, args->N, i) & kCameraRay)) {
+            args->valid[i] = 0;
+            continue;
+        }
+        if (!m.hasCutout()) continue;
         float coverage = m.alpha * scene.textures->scalar(m.alphaMap, scene.uvAt(tri, u, v), Footprint{});
         if (m.alphaCutoff >= 0.0f) coverage = coverage >= m.alphaCutoff ? 1.0f : 0.0f;
         if (coverage >= 1.0f) continue;
@@ -153,10 +162,11 @@ Accel::Accel(const Scene& scene, int threads, const AccelOptions& options) : imp
     // Which triangles have a cutout: they go into a geometry of their own.
     impl_->cutouts.scene = &scene;
     bool anyCutout = false;
-    for (const Material& m : scene.materials) anyCutout |= m.hasCutout();
+    auto filtered = [](const Material& m) { return m.hasCutout() || m.unlit; };
+    for (const Material& m : scene.materials) anyCutout |= filtered(m);
     if (anyCutout)
         for (size_t t = 0; t < scene.triangleCount(); ++t)
-            (scene.materials[scene.triMaterial[t]].hasCutout() ? impl_->cutouts.triangle : impl_->opaqueTriangle)
+            (filtered(scene.materials[scene.triMaterial[t]]) ? impl_->cutouts.triangle : impl_->opaqueTriangle)
                 .push_back(uint32_t(t));
     auto addGeometry = [&](const std::vector<uint32_t>* subset, unsigned id) {
         size_t count = subset ? subset->size() : scene.triangleCount();
@@ -240,7 +250,7 @@ static void fillRay(RTCRay& r, const Ray& ray, float tfar) {
     r.tnear = 0.0f;
     r.tfar = tfar;
     r.time = 0.0f;
-    r.mask = 0xFFFFFFFFu; // Debian's Embree is built with ray masks
+    r.mask = kAnyRay; // Debian's Embree is built with ray masks
     r.id = 0;
     r.flags = 0;
 }
@@ -251,7 +261,7 @@ static void fillPacketLane(RTCRayHit8& packet, int i, const Vec3& origin, const 
     p.org_x[i] = origin.x, p.org_y[i] = origin.y, p.org_z[i] = origin.z;
     p.dir_x[i] = dir.x, p.dir_y[i] = dir.y, p.dir_z[i] = dir.z;
     p.tnear[i] = 0.0f, p.tfar[i] = tfar, p.time[i] = 0.0f;
-    p.mask[i] = 0xFFFFFFFFu, p.id[i] = 0, p.flags[i] = 0;
+    p.mask[i] = kAnyRay | kCameraRay, p.id[i] = 0, p.flags[i] = 0; // packets carry camera rays
     packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     packet.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
 }

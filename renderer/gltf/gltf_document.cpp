@@ -456,6 +456,7 @@ private:
             textureInfo(*e, eat, "clearcoatRoughnessTexture");
             textureInfo(*e, eat, "clearcoatNormalTexture");
         }
+        extension(m, at, "KHR_materials_unlit"); // an object (of no keys pt reads)
         if (const Json* e = extension(m, at, "KHR_materials_sheen")) {
             At eat = at.inside("extensions.KHR_materials_sheen");
             numbers(*e, eat, "sheenColorFactor", 3, 0.0, 1.0);

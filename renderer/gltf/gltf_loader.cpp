@@ -25,7 +25,7 @@ namespace {
 
 constexpr const char* kSupportedExtensions[] = {
     "KHR_materials_clearcoat", "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_sheen",
-    "KHR_materials_specular",
+    "KHR_materials_specular", "KHR_materials_unlit",
     "KHR_materials_transmission",
     "KHR_materials_volume", "KHR_lights_punctual", "KHR_mesh_quantization", "KHR_texture_transform",
 };
@@ -641,6 +641,13 @@ private:
             m.emissionMap = textureMap(g.emissiveTexture.index, g.emissiveTexture.texCoord, g.emissiveTexture.extensions,
                                        true, what + " emissiveTexture");
 
+        // KHR_materials_unlit: the base colour alone, seen by camera rays only (the rest of the
+        // material is not used; it neither lights nor shadows anything).
+        if (g.extensions.count("KHR_materials_unlit")) {
+            m.unlit = true;
+            m.emission = Spectrum(0.0f);
+            m.emissionMap = TextureMap{};
+        }
         // Coverage: MASK cuts at alphaCutoff, BLEND is stochastic (rays pass 1 - alpha of the time).
         std::string mode = g.alphaMode.empty() ? "OPAQUE" : g.alphaMode;
         if (mode == "MASK" || mode == "BLEND") {

@@ -58,6 +58,16 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
     const Material& m = scene_.materials[sp.material];
     path.coneWidth += pixelSpread_ * hit.t;
     if (m.isTextured()) addTextureCoordinates(sp, tri, scene_, tangents_, hit, ray.dir, path.coneWidth);
+    if (m.unlit) [[unlikely]] { // only camera rays reach it (accel.cpp): its base colour, as seen
+        const Spectrum color = m.kd * fetchSurfaceInputs(m, *scene_.textures, sp, -ray.dir).kd;
+        path.L += path.beta * color;
+        if (depth == 0 && firstHits) {
+            path.first.albedo = color;
+            path.first.normal = glm::dot(ray.dir, sp.ns) < 0.0f ? sp.ns : -sp.ns;
+            path.first.depth = hit.t;
+        }
+        return false;
+    }
     if (m.isEmissive())
         path.L += path.beta * emittedRadiance(m, *scene_.textures, sp.uv, sp.footprint) *
                   hitWeight(path, lights_.emitterOfTriangle(hit.prim), hit.t);

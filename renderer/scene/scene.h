@@ -71,6 +71,7 @@ struct Material {
     MaterialModel model = MaterialModel::Lab;
     bool volume = false;          // glTF KHR_materials_volume: the mesh bounds a volume that refracting paths enter
     bool vertexColors = false;    // glTF COLOR_0 multiplies kd (Scene::vertexColors)
+    bool unlit = false;           // glTF KHR_materials_unlit: camera rays see kd, nothing else sees it
     Spectrum kd{0.7f};            // Lambert reflectance (Kd, diffuseReflectance)
     Spectrum ks{1.0f};            // mirror colour (Ks, specularReflectance)
     Spectrum r0{0.0f};            // Fresnel reflectance at normal incidence (reflat0deg)
