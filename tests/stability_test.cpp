@@ -40,6 +40,17 @@ std::vector<std::pair<std::string, Material>> losslessMaterials() {
     mixed.transparency = 0.4f;
     mixed.eta = 1.33f;
     out.emplace_back("mixed", mixed);
+    Material gltfGlass; // glTF transmission: white, smooth, Fresnel from the ior
+    gltfGlass.model = MaterialModel::MetalRough;
+    gltfGlass.kd = Spectrum(1.0f);
+    gltfGlass.metallic = 0.0f;
+    gltfGlass.roughness = 0.0f;
+    gltfGlass.eta = 1.5f;
+    gltfGlass.transparency = 1.0f;
+    gltfGlass.volume = true; // refracting, a clear volume
+    out.emplace_back("gltf_glass", gltfGlass);
+    gltfGlass.volume = false; // a thin wall: the mirror and straight through
+    out.emplace_back("gltf_thin_wall", gltfGlass);
     return out;
 }
 
@@ -258,6 +269,31 @@ TEST(TinyLights, InsideAnEnclosingSphereLight) {
         EXPECT_EQ(r.rays.discarded, 0u);
         expectNear(regionStats(r, 0, 0, 16, 1), Spectrum(1.0f), 5.0f, 1e-4f, "the light seen directly");
         expectNear(regionStats(r, 4, 10, 12, 16), Spectrum(0.6f), 5.0f, 2e-3f, "the floor");
+    }
+}
+
+// Volume absorption at the extremes of attenuation distance (1e-30: sigma capped at 1e30, black
+// at once; 1e30: clear), on glass seen at grazing angles: finite, no discarded samples, and the
+// clear one is the clear volume's image exactly.
+TEST(WhiteFurnace, ExtremeAbsorptionStaysFinite) {
+    Material glass;
+    glass.model = MaterialModel::MetalRough;
+    glass.kd = Spectrum(1.0f);
+    glass.metallic = 0.0f;
+    glass.roughness = 0.0f;
+    glass.eta = 1.5f;
+    glass.transparency = 1.0f;
+    glass.volume = true;
+    RenderSettings s;
+    s.maxDepth = 64;
+    Rendered clear = render(furnaceScene(glass, false), 32, 32, 8, s);
+    glass.attenuation = Spectrum(1e30f, 1e-30f, 0.5f);
+    Rendered mixed = render(furnaceScene(glass, false), 32, 32, 8, s);
+    EXPECT_EQ(mixed.rays.discarded, 0u);
+    for (size_t i = 0; i < mixed.mean.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(mixed.mean[i]) && mixed.mean[i] >= 0.0f) << i;
+        if (i % 3 == 1) EXPECT_NEAR(mixed.mean[i], clear.mean[i], 1e-5f) << "sigma 1e-30 is clear, pixel " << i / 3;
+        if (i % 3 == 0) EXPECT_LE(mixed.mean[i], clear.mean[i] + 1e-6f) << "absorbing, pixel " << i / 3;
     }
 }
 
