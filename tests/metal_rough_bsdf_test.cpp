@@ -299,7 +299,7 @@ TEST(MetalRoughBsdf, SheenAlbedoTableMatchesTheLobe) {
         for (float cosO : {0.05f, 0.3f, 0.7f, 0.98f, 1.0f}) {
             Vec3 wo = direction(cosO, 0.0f);
             MetalRoughBsdf b = MetalRoughBsdf::make(sheened(Spectrum(0.0f), 0.0f, Spectrum(1.0f), alpha), wo);
-            EXPECT_TRUE(b.pSheen == 1.0f || b.isBlack()) << "only the sheen is sampled";
+            EXPECT_TRUE(b.pSheen > 0.9999f || b.isBlack()) << "only the sheen is sampled (up to a contracted multiply-add)";
             double e = albedo(b, wo, 400000), table = sheenAlbedo(cosO, alpha);
             EXPECT_NEAR(e, table, 0.02 * table + 2e-3) << "alpha " << alpha << " cos " << cosO;
         }
