@@ -19,8 +19,6 @@ struct Bsdf {
     };
 
     Bsdf() : model(Model::Lab), lab() {}
-    Bsdf(const LabBsdf& b) : model(Model::Lab), lab(b) {}
-    Bsdf(const MetalRoughBsdf& b) : model(Model::MetalRough), metalRough(b) {}
     // Built in place: a BSDF made elsewhere and assigned is copied through the stack, each
     // 16-byte load of the copy a failed store forwarding from the member-wise stores before it
     // (evaluateMaterial took 10 % of cornell's time so, 4 % in place).

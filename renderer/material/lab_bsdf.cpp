@@ -54,24 +54,28 @@ Spectrum LabBsdf::evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) const {
     // The rough lobes, on wo's side (o.z > 0).
     Side side = sideOf(wo, eta);
     Vec3 o = wo * side.sign, i = wi * side.sign;
-    if (i.z > 0.0f) { // reflection: the mirror lobe, and Refr's totally internally reflecting facets
-        Vec3 m = safeNormalize(o + i);
-        if (m.z <= 0.0f) return f;
-        // D and G1(o, m) serve both: f cos = D G1(o) G1(i) / (4 o.z), and the density of the
-        // visible normal, G1(o) (o.m) D / o.z, times the reflection's Jacobian.
-        float d = ggxD(m, alpha), g1o = smithG1(o, m, alpha), om = std::max(0.0f, glm::dot(o, m));
-        float g = d * g1o * smithG1(i, m, alpha) / (4.0f * o.z);
-        bool tir = pRefract > 0.0f && !thin && totallyReflects(o, m, side.etaRel);
-        if (pMirror > 0.0f) f += mirror * g;
-        if (tir) f += refract * g;
-        pdf += (pMirror + (tir ? pRefract : 0.0f)) * (g1o * om * d / o.z) * reflectionJacobian(i, m);
-    } else if (i.z < 0.0f && pRefract > 0.0f && thin) { // the mirror lobe at i turned back through the wall
-        Vec3 r(i.x, i.y, -i.z);
+    // A thin wall's Refr is the mirror lobe turned through the surface: evaluated at the mirror
+    // image r of i, with Refr's weight.
+    const bool through = thin && i.z < 0.0f && pRefract > 0.0f;
+    if (i.z > 0.0f || through) { // reflection: the mirror lobe, and Refr's totally internally reflecting facets
+        const Vec3 r = through ? Vec3(i.x, i.y, -i.z) : i;
         Vec3 m = safeNormalize(o + r);
         if (m.z <= 0.0f) return f;
+        // D and G1(o, m) serve both: f cos = D G1(o) G1(r) / (4 o.z), and the density of the
+        // visible normal, G1(o) (o.m) D / o.z, times the reflection's Jacobian.
         float d = ggxD(m, alpha), g1o = smithG1(o, m, alpha), om = std::max(0.0f, glm::dot(o, m));
-        f += refract * (d * g1o * smithG1(r, m, alpha) / (4.0f * o.z));
-        pdf += pRefract * (g1o * om * d / o.z) * reflectionJacobian(r, m);
+        float g = d * g1o * smithG1(r, m, alpha) / (4.0f * o.z);
+        float lobes; // the probability of the lobes that reach r
+        if (through) {
+            f += refract * g;
+            lobes = pRefract;
+        } else {
+            bool tir = pRefract > 0.0f && !thin && totallyReflects(o, m, side.etaRel);
+            if (pMirror > 0.0f) f += mirror * g;
+            if (tir) f += refract * g;
+            lobes = pMirror + (tir ? pRefract : 0.0f);
+        }
+        pdf += lobes * (g1o * om * d / o.z) * reflectionJacobian(r, m);
     } else if (i.z < 0.0f && pRefract > 0.0f) { // transmission through m = -(o + eta i)
         Vec3 m = safeNormalize(-(o + side.etaRel * i));
         if (m.z < 0.0f) m = -m;
@@ -97,13 +101,11 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
         Vec3 m = sampleVisibleNormal(o, alpha, u2);
         Vec3 i;
         float scale = 1.0f;
-        if (chooseRefract && thin) {
-            i = reflectAbout(o, m);
-            if (i.z <= 0.0f) return false;
-            i.z = -i.z; // through the wall, unbent
-        } else if (chooseMirror || !refractAbout(o, m, s.etaRel, i)) {
+        // A thin wall's Refr reflects about m and then crosses the wall unbent.
+        if (chooseMirror || thin || !refractAbout(o, m, s.etaRel, i)) {
             i = reflectAbout(o, m);
             if (i.z <= 0.0f) return false; // reflected into the surface: lost to single scattering
+            if (chooseRefract && thin) i.z = -i.z; // through the wall
         } else {
             if (i.z >= 0.0f) return false;
             scale = 1.0f / (s.etaRel * s.etaRel);
