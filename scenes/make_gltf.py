@@ -485,10 +485,32 @@ def materials():
     g.write("materials.gltf")
 
 
-def panel_and_sun(g, strength, sun_color, lux, sun_towards, sun_name="Sun"):
-    """The lighting and camera of the extension scenes' spheres: an emissive panel above and in
-    front of them (emissive strength `strength`), a directional light travelling towards
-    `sun_towards`, and the camera."""
+def sphere_row_scene(extensions_used):
+    """The start of the clear-coat and sheen scenes: a grey rough floor."""
+    g = Gltf()
+    g.d["extensionsUsed"] = extensions_used
+    floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0.0,
+                                                            "roughnessFactor": 0.9})
+    g.node(mesh=ground(g, 20, floor), name="Ground")
+    return g
+
+
+def sphere_row(g, looks):
+    """Five spheres of radius 0.45 in a row along x, one per (name, pbrMetallicRoughness,
+    extensions), with texture coordinates."""
+    for k, (name, pbr, ext) in enumerate(looks):
+        m = g.material(name=name, pbrMetallicRoughness=pbr, extensions=ext)
+        g.node(mesh=sphere(g, 0.45, m, uv=True), translation=[-2.0 + k, 0.45, 0.0], name=name)
+
+
+def light_and_write(g, lit, name, strength, sun_color, lux, sun_towards, sun_name="Sun"):
+    """Writes NAME.gltf lit by an emissive panel above and in front of the spheres (emissive
+    strength `strength`) and a directional light travelling towards `sun_towards`; or, unlit,
+    NAME_white.gltf, which pt and Cycles light with a uniform white environment."""
+    if not lit:
+        camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.45, 0.0], 30.0, aspect=2.0)
+        g.write(name + "_white.gltf")
+        return
     panel = g.material(name="Panel", pbrMetallicRoughness={"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0},
                        emissiveFactor=[1.0, 0.95, 0.85],
                        extensions={"KHR_materials_emissive_strength": {"emissiveStrength": strength}})
@@ -499,6 +521,7 @@ def panel_and_sun(g, strength, sun_color, lux, sun_towards, sun_name="Sun"):
     g.node(extensions={"KHR_lights_punctual": {"light": sun}}, rotation=look_at_quaternion([0, 0, 0], sun_towards),
            name=sun_name + "Node")
     camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.45, 0.0], 30.0, aspect=2.0)
+    g.write(name + ".gltf")
 
 
 def clearcoat(lit=True):
@@ -508,11 +531,7 @@ def clearcoat(lit=True):
     under a smooth coat, under a coat of roughness 0.4, a black base (specularFactor 0) under a
     smooth coat (the coat's Fresnel alone), and a coat whose weight (R stripes), roughness (G
     ramp) and normal (dimples) come from textures over a blue base."""
-    g = Gltf()
-    g.d["extensionsUsed"] = ["KHR_materials_clearcoat", "KHR_materials_specular"]
-    floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0.0,
-                                                            "roughnessFactor": 0.9})
-    g.node(mesh=ground(g, 20, floor), name="Ground")
+    g = sphere_row_scene(["KHR_materials_clearcoat", "KHR_materials_specular"])
     n = 64
     weight = g.image(png(n, n, 3, lambda x, y: (255 if (x // 8) % 2 else 40, int(255 * y / (n - 1)), 0)))
     normal = g.image(png(n, n, 3, lambda x, y: dome_normal(x, y, -1.0)))  # dimples
@@ -526,16 +545,9 @@ def clearcoat(lit=True):
               {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0, "clearcoatTexture": {"index": weight},
                                            "clearcoatRoughnessFactor": 0.5, "clearcoatRoughnessTexture": {"index": weight},
                                            "clearcoatNormalTexture": {"index": normal, "scale": 1.0}}})]
-    for k, (name, pbr, ext) in enumerate(looks):
-        m = g.material(name=name, pbrMetallicRoughness=pbr, extensions=ext)
-        g.node(mesh=sphere(g, 0.45, m, uv=True), translation=[-2.0 + k, 0.45, 0.0], name=name)
-    if not lit:
-        camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.45, 0.0], 30.0, aspect=2.0)
-        g.write("clearcoat_white.gltf")
-        return
+    sphere_row(g, looks)
     # The smooth coats mirror the panel (a point light they cannot).
-    panel_and_sun(g, 6.0, [0.8, 0.85, 1.0], 300.0, [1.0, -2.0, -1.5])
-    g.write("clearcoat.gltf")
+    light_and_write(g, lit, "clearcoat", 6.0, [0.8, 0.85, 1.0], 300.0, [1.0, -2.0, -1.5])
 
 
 def cornell_box():
@@ -578,6 +590,29 @@ def cornell_box():
     g.write("cornell_box.gltf")
 
 
+def striped_wall(g):
+    """A blue wall behind the glass scenes' spheres with yellow stripes, to show what refraction
+    does to them."""
+    wall = g.material(name="Wall", pbrMetallicRoughness={"baseColorFactor": [0.2, 0.3, 0.6, 1], "metallicFactor": 0.0,
+                                                          "roughnessFactor": 1.0})
+    stripe = g.material(name="Stripe", pbrMetallicRoughness={"baseColorFactor": [0.9, 0.8, 0.2, 1], "metallicFactor": 0.0,
+                                                              "roughnessFactor": 1.0})
+    g.node(mesh=quad(g, [(-6, 0, -1.5), (6, 0, -1.5), (6, 3, -1.5), (-6, 3, -1.5)], (0, 0, 1), wall, uv=False), name="Wall")
+    for k in range(-5, 6):
+        x = 0.5 * k
+        g.node(mesh=quad(g, [(x - 0.08, 0, -1.49), (x + 0.08, 0, -1.49), (x + 0.08, 3, -1.49), (x - 0.08, 3, -1.49)],
+                         (0, 0, 1), stripe, uv=False), name=f"Stripe{k + 5}")
+
+
+def lamp_and_sun(g):
+    """The glass scenes' lights: a point lamp above and in front, a directional light from the front left."""
+    lamp = g.light(type="point", color=[1.0, 0.95, 0.9], intensity=6000.0, name="Lamp")
+    g.node(extensions={"KHR_lights_punctual": {"light": lamp}}, translation=[1.0, 3.0, 2.0], name="LampNode")
+    sun = g.light(type="directional", color=[0.8, 0.85, 1.0], intensity=1000.0, name="Sun")
+    g.node(extensions={"KHR_lights_punctual": {"light": sun}}, rotation=look_at_quaternion([0, 0, 0], [-1.0, -2.0, -1.5]),
+           name="SunNode")
+
+
 def glass():
     """KHR_materials_transmission, _volume, _ior and _specular on spheres over a floor, under a
     point light and a white-ish sky of directional light: from the left clear glass, rough glass
@@ -589,15 +624,7 @@ def glass():
     floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.6, 0.6, 0.6, 1], "metallicFactor": 0.0,
                                                             "roughnessFactor": 0.8})
     g.node(mesh=ground(g, 20, floor), name="Ground")
-    wall = g.material(name="Wall", pbrMetallicRoughness={"baseColorFactor": [0.2, 0.3, 0.6, 1], "metallicFactor": 0.0,
-                                                          "roughnessFactor": 1.0})
-    stripe = g.material(name="Stripe", pbrMetallicRoughness={"baseColorFactor": [0.9, 0.8, 0.2, 1], "metallicFactor": 0.0,
-                                                              "roughnessFactor": 1.0})
-    g.node(mesh=quad(g, [(-6, 0, -1.5), (6, 0, -1.5), (6, 3, -1.5), (-6, 3, -1.5)], (0, 0, 1), wall, uv=False), name="Wall")
-    for k in range(-5, 6):  # stripes behind the spheres, to show what refraction does to them
-        x = 0.5 * k
-        g.node(mesh=quad(g, [(x - 0.08, 0, -1.49), (x + 0.08, 0, -1.49), (x + 0.08, 3, -1.49), (x - 0.08, 3, -1.49)],
-                         (0, 0, 1), stripe, uv=False), name=f"Stripe{k + 5}")
+    striped_wall(g)
     volume = {"thicknessFactor": 1.0}
     looks = [("ClearGlass", [1, 1, 1], 0.0, {"KHR_materials_transmission": {"transmissionFactor": 1.0},
                                                "KHR_materials_volume": volume}),
@@ -612,11 +639,7 @@ def glass():
         m = g.material(name=name, pbrMetallicRoughness={"baseColorFactor": color + [1], "metallicFactor": 0.0,
                                                           "roughnessFactor": rough}, extensions=ext)
         g.node(mesh=sphere(g, 0.45, m), translation=[-2.0 + k, 0.45, 0.0], name=name)
-    lamp = g.light(type="point", color=[1.0, 0.95, 0.9], intensity=6000.0, name="Lamp")
-    g.node(extensions={"KHR_lights_punctual": {"light": lamp}}, translation=[1.0, 3.0, 2.0], name="LampNode")
-    sun = g.light(type="directional", color=[0.8, 0.85, 1.0], intensity=1000.0, name="Sun")
-    g.node(extensions={"KHR_lights_punctual": {"light": sun}}, rotation=look_at_quaternion([0, 0, 0], [-1.0, -2.0, -1.5]),
-           name="SunNode")
+    lamp_and_sun(g)
     camera_node(g, [0.0, 1.2, 6.0], [0.0, 0.5, 0.0], 30.0, aspect=2.0)
     g.write("glass.gltf")
 
@@ -636,16 +659,7 @@ def volume(lit=True):
                                                             "roughnessFactor": 0.8})
     g.node(mesh=ground(g, 20, floor), name="Ground")
     if lit:
-        wall = g.material(name="Wall", pbrMetallicRoughness={"baseColorFactor": [0.2, 0.3, 0.6, 1], "metallicFactor": 0.0,
-                                                              "roughnessFactor": 1.0})
-        stripe = g.material(name="Stripe", pbrMetallicRoughness={"baseColorFactor": [0.9, 0.8, 0.2, 1],
-                                                                  "metallicFactor": 0.0, "roughnessFactor": 1.0})
-        g.node(mesh=quad(g, [(-6, 0, -1.5), (6, 0, -1.5), (6, 3, -1.5), (-6, 3, -1.5)], (0, 0, 1), wall, uv=False),
-               name="Wall")
-        for k in range(-5, 6):
-            x = 0.5 * k
-            g.node(mesh=quad(g, [(x - 0.08, 0, -1.49), (x + 0.08, 0, -1.49), (x + 0.08, 3, -1.49), (x - 0.08, 3, -1.49)],
-                             (0, 0, 1), stripe, uv=False), name=f"Stripe{k + 5}")
+        striped_wall(g)
     n = 64
     bands = g.image(png(n, n, 3, lambda x, y: (255 if (y // 8) % 2 else 0, 0, 0)))
     spec = g.image(png(n, n, 4, lambda x, y: (255, 255, 255, int(255 * y / (n - 1)))))
@@ -672,11 +686,7 @@ def volume(lit=True):
                                                                       "roughnessFactor": 0.0},
                             extensions={"KHR_materials_transmission": {"transmissionFactor": 1.0}})
         g.node(mesh=sphere(g, 0.3, bubble), translation=[-1.5, 0.3, 1.3], name="ThinBubble")
-        lamp = g.light(type="point", color=[1.0, 0.95, 0.9], intensity=6000.0, name="Lamp")
-        g.node(extensions={"KHR_lights_punctual": {"light": lamp}}, translation=[1.0, 3.0, 2.0], name="LampNode")
-        sun = g.light(type="directional", color=[0.8, 0.85, 1.0], intensity=1000.0, name="Sun")
-        g.node(extensions={"KHR_lights_punctual": {"light": sun}}, rotation=look_at_quaternion([0, 0, 0], [-1.0, -2.0, -1.5]),
-               name="SunNode")
+        lamp_and_sun(g)
     camera_node(g, [0.0, 1.2, 6.0], [0.0, 0.5, 0.0], 30.0, aspect=2.0)
     g.write("volume.gltf" if lit else "volume_white.gltf")
 
@@ -689,37 +699,23 @@ def sheen(lit=True):
     under a pink velvet sheen (roughness 0.8), a black base under a white sheen of roughness 0.5
     (the sheen alone), and a sheen whose colour (bands) and roughness (A, a ramp from the top)
     come from textures over a grey base."""
-    g = Gltf()
-    g.d["extensionsUsed"] = ["KHR_materials_sheen"]
-    floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0.0,
-                                                            "roughnessFactor": 0.9})
-    g.node(mesh=ground(g, 20, floor), name="Ground")
+    g = sphere_row_scene(["KHR_materials_sheen", "KHR_materials_specular"])
     n = 64
     colour = g.image(png(n, n, 3, lambda x, y: [(255, 230, 120), (120, 200, 255)][(x // 8) % 2]))
     rough = g.image(png(n, n, 4, lambda x, y: (255, 255, 255, 20 + int(235 * y / (n - 1)))))
     red = {"baseColorFactor": [0.6, 0.08, 0.08, 1], "metallicFactor": 0.0, "roughnessFactor": 0.8}
-    looks = [("Red", red, {}),
-             ("RedSheen", red, {"sheenColorFactor": [1.0, 1.0, 1.0], "sheenRoughnessFactor": 0.3}),
-             ("Velvet", {"baseColorFactor": [0.05, 0.05, 0.3, 1], "metallicFactor": 0.0, "roughnessFactor": 1.0},
-              {"sheenColorFactor": [1.0, 0.4, 0.7], "sheenRoughnessFactor": 0.8}),
-             ("SheenAlone", {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0, "roughnessFactor": 1.0},
-              {"sheenColorFactor": [1.0, 1.0, 1.0], "sheenRoughnessFactor": 0.5}),
-             ("TexturedSheen", {"baseColorFactor": [0.3, 0.3, 0.3, 1], "metallicFactor": 0.0, "roughnessFactor": 0.9},
-              {"sheenColorFactor": [1.0, 1.0, 1.0], "sheenColorTexture": {"index": colour},
-               "sheenRoughnessFactor": 1.0, "sheenRoughnessTexture": {"index": rough}})]
-    for k, (name, pbr, ext) in enumerate(looks):
-        extensions = {"KHR_materials_sheen": ext} if ext else {}
-        if name == "SheenAlone":
-            extensions["KHR_materials_specular"] = {"specularFactor": 0.0}
-            g.d["extensionsUsed"].append("KHR_materials_specular")
-        m = g.material(name=name, pbrMetallicRoughness=pbr, extensions=extensions)
-        g.node(mesh=sphere(g, 0.45, m, uv=True), translation=[-2.0 + k, 0.45, 0.0], name=name)
-    if not lit:
-        camera_node(g, [0.0, 1.2, 5.0], [0.0, 0.45, 0.0], 30.0, aspect=2.0)
-        g.write("sheen_white.gltf")
-        return
-    panel_and_sun(g, 3.0, [1.0, 0.95, 0.9], 600.0, [0.4, -0.6, 1.5], sun_name="BackLight")  # the sun from behind
-    g.write("sheen.gltf")
+    sheen = lambda ext: {"KHR_materials_sheen": ext}
+    sphere_row(g, [("Red", red, {}),
+                   ("RedSheen", red, sheen({"sheenColorFactor": [1.0, 1.0, 1.0], "sheenRoughnessFactor": 0.3})),
+                   ("Velvet", {"baseColorFactor": [0.05, 0.05, 0.3, 1], "metallicFactor": 0.0, "roughnessFactor": 1.0},
+                    sheen({"sheenColorFactor": [1.0, 0.4, 0.7], "sheenRoughnessFactor": 0.8})),
+                   ("SheenAlone", {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0, "roughnessFactor": 1.0},
+                    dict(sheen({"sheenColorFactor": [1.0, 1.0, 1.0], "sheenRoughnessFactor": 0.5}),
+                         KHR_materials_specular={"specularFactor": 0.0})),
+                   ("TexturedSheen", {"baseColorFactor": [0.3, 0.3, 0.3, 1], "metallicFactor": 0.0, "roughnessFactor": 0.9},
+                    sheen({"sheenColorFactor": [1.0, 1.0, 1.0], "sheenColorTexture": {"index": colour},
+                           "sheenRoughnessFactor": 1.0, "sheenRoughnessTexture": {"index": rough}}))])
+    light_and_write(g, lit, "sheen", 3.0, [1.0, 0.95, 0.9], 600.0, [0.4, -0.6, 1.5], sun_name="BackLight")  # from behind
 
 
 def unlit():

@@ -12,6 +12,20 @@
 namespace pt::test {
 namespace {
 
+// glTF transmission: white, smooth, Fresnel from the ior; refracting into a clear volume, or a
+// thin wall.
+Material gltfGlass(bool volume) {
+    Material glass;
+    glass.model = MaterialModel::MetalRough;
+    glass.kd = Spectrum(1.0f);
+    glass.metallic = 0.0f;
+    glass.roughness = 0.0f;
+    glass.eta = 1.5f;
+    glass.transparency = 1.0f;
+    glass.volume = volume;
+    return glass;
+}
+
 // Materials whose every lobe is white: they absorb nothing at any angle.
 std::vector<std::pair<std::string, Material>> losslessMaterials() {
     std::vector<std::pair<std::string, Material>> out;
@@ -40,17 +54,8 @@ std::vector<std::pair<std::string, Material>> losslessMaterials() {
     mixed.transparency = 0.4f;
     mixed.eta = 1.33f;
     out.emplace_back("mixed", mixed);
-    Material gltfGlass; // glTF transmission: white, smooth, Fresnel from the ior
-    gltfGlass.model = MaterialModel::MetalRough;
-    gltfGlass.kd = Spectrum(1.0f);
-    gltfGlass.metallic = 0.0f;
-    gltfGlass.roughness = 0.0f;
-    gltfGlass.eta = 1.5f;
-    gltfGlass.transparency = 1.0f;
-    gltfGlass.volume = true; // refracting, a clear volume
-    out.emplace_back("gltf_glass", gltfGlass);
-    gltfGlass.volume = false; // a thin wall: the mirror and straight through
-    out.emplace_back("gltf_thin_wall", gltfGlass);
+    out.emplace_back("gltf_glass", gltfGlass(true));
+    out.emplace_back("gltf_thin_wall", gltfGlass(false)); // the mirror and straight through
     return out;
 }
 
@@ -276,14 +281,7 @@ TEST(TinyLights, InsideAnEnclosingSphereLight) {
 // at once; 1e30: clear), on glass seen at grazing angles: finite, no discarded samples, and the
 // clear one is the clear volume's image exactly.
 TEST(WhiteFurnace, ExtremeAbsorptionStaysFinite) {
-    Material glass;
-    glass.model = MaterialModel::MetalRough;
-    glass.kd = Spectrum(1.0f);
-    glass.metallic = 0.0f;
-    glass.roughness = 0.0f;
-    glass.eta = 1.5f;
-    glass.transparency = 1.0f;
-    glass.volume = true;
+    Material glass = gltfGlass(true);
     RenderSettings s;
     s.maxDepth = 64;
     Rendered clear = render(furnaceScene(glass, false), 32, 32, 8, s);
