@@ -16,6 +16,10 @@ struct ShadingPoint {
     Frame frame;
     Vec3 wo;   // outgoing direction in the frame
     Bsdf bsdf;
+    // The frame's normal was turned to the side of wo, away from the surface's outside (an opaque
+    // glTF surface seen from behind): the side tests of the path loop must turn the geometric
+    // normal with it.
+    bool turned = false;
 };
 
 // Step 2, lab model: the material's factors, replaced (Pr, Pm) or multiplied (Kd, Ks) by its maps.
@@ -61,6 +65,7 @@ inline ShadingPoint evaluateMaterial(const Material& m, const TextureCache& text
         const bool transmits = m.transparency > 0.0f;
         const bool flip = !transmits && glm::dot(wo, n) < 0.0f;
         if (flip) n = -n;
+        s.turned = flip;
         s.frame = Frame(n);
         s.wo = s.frame.toLocal(wo);
         if (p.clearcoat > 0.0f) { // the coat's normal in the frame, turned with it

@@ -76,6 +76,9 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
     const Frame& frame = shading.frame;
     const Vec3 woLocal = shading.wo;
     const Bsdf& bsdf = shading.bsdf;
+    // The geometric normal on the frame's side, for the tests that wi leaves from the side the
+    // frame says (a frame turned to a back face turns it too, or the back would stay black).
+    const Vec3 ng = shading.turned ? -sp.ng : sp.ng;
     if (depth == 0 && firstHits) {
         path.first.albedo = bsdf.albedo();
         path.first.normal = woLocal.z >= 0.0f ? frame.n : -frame.n;
@@ -94,7 +97,7 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
         Vec3 wiLocal = frame.toLocal(ls.wi);
         // The shading and the geometric normal must agree on the side wi leaves from, or the
         // shadow ray would start on the wrong side of the surface.
-        if (ls.pdf > 0.0f && glm::dot(ls.wi, sp.ng) * wiLocal.z > 0.0f) {
+        if (ls.pdf > 0.0f && glm::dot(ls.wi, ng) * wiLocal.z > 0.0f) {
             float bsdfPdf; // for MIS; evaluated with f in one pass
             Spectrum f = bsdf.evalPdf(woLocal, wiLocal, bsdfPdf);
             if (!isBlack(f) && !isBlack(ls.radiance)) {
@@ -132,7 +135,7 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
     BsdfSample bs;
     if (!bsdf.sample(woLocal, u.lobe, u.direction, bs)) return false;
     Vec3 wi = frame.toWorld(bs.wi);
-    if ((glm::dot(wi, sp.ng) > 0.0f) != (bs.wi.z > 0.0f)) return false; // see the shadow-ray note
+    if ((glm::dot(wi, ng) > 0.0f) != (bs.wi.z > 0.0f)) return false; // see the shadow-ray note
     if (m.volume && glm::dot(wi, sp.ng) * glm::dot(ray.dir, sp.ng) > 0.0f) // crossed a volume's surface
         path.medium = mediumAfterCrossing(path.medium, sp.material, m, wi, sp.ng);
     path.beta *= bs.weight;
