@@ -170,6 +170,11 @@ TEST(Gltf, AlphaModesCoverAsSpecified) {
         return m.x / std::max(1e-6f, m.y);
     };
     EXPECT_LT(redness(10, 30), 1.5f);   // OPAQUE ignores alpha: white even where alpha is 0
+    // and equally bright there: colour and alpha are separate in glTF, so alpha never darkens the
+    // colour (premultiplied on reading, the OPAQUE quad fell to black at its alpha-0 edge).
+    const float opaqueLeft = regionStats(r, 2, 50, 8, 70).mean.y, opaqueRight = regionStats(r, 28, 50, 34, 70).mean.y;
+    EXPECT_NEAR(opaqueLeft, opaqueRight, 0.03f * opaqueRight);
+    EXPECT_NEAR(regionStats(r, 80, 50, 86, 70).mean.y, opaqueRight, 0.03f * opaqueRight); // MASK above its cutoff
     EXPECT_GT(redness(46, 58), 4.0f);   // MASK, alpha below 0.5: the red wall shows
     EXPECT_LT(redness(74, 86), 1.5f);   // MASK, alpha above 0.5: the quad
     EXPECT_GT(redness(100, 106), 3.0f); // BLEND: mostly the wall where alpha is below 0.2

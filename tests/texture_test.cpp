@@ -5,6 +5,7 @@
 #include "texture/texture_io.h"
 #include "tests/test_scenes.h"
 
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -211,6 +212,38 @@ TEST(Texture, SrgbAgainstLinear) {
         ASSERT_TRUE(readTexture(file, colour, t, error, 1e9, tooLarge)) << error;
         EXPECT_NEAR(t.texel(0, 0, 0), want, 1e-4f) << file << (colour ? " as colour" : " as data");
         EXPECT_EQ(int(t.format), int(format)) << file << (colour ? " as colour" : " as data");
+    }
+}
+
+// glTF colour and alpha are separate (unassociated): alpha drives coverage only, in MASK and BLEND.
+// A PNG of sRGB 200 at alpha 255, 128 and 0 must read as the same colour in all three texels,
+// as colour (RGB) and as data (RGBA, where the alpha channel is the fourth); OpenImageIO
+// premultiplies by alpha unless asked not to, which darkened them to 0.57, 0.13 and 0.
+TEST(Texture, AlphaDoesNotDarkenColour) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::path(::testing::TempDir()) / "pt_texture_alpha";
+    fs::create_directories(dir);
+    const std::string png = (dir / "alpha.png").string();
+    {
+        const unsigned char texels[3][4] = {{200, 200, 200, 255}, {200, 200, 200, 128}, {200, 200, 200, 0}};
+        auto out = OIIO::ImageOutput::create(png);
+        ASSERT_TRUE(out);
+        OIIO::ImageSpec spec(3, 1, 4, OIIO::TypeDesc::UINT8);
+        spec.attribute("oiio:UnassociatedAlpha", 1); // write the bytes as given
+        ASSERT_TRUE(out->open(png, spec));
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, texels));
+        ASSERT_TRUE(out->close());
+    }
+    for (bool colour : {true, false}) {
+        Texture t;
+        std::string error;
+        bool tooLarge;
+        ASSERT_TRUE(readTexture(png, colour, t, error, 1e9, tooLarge)) << error;
+        const float want = colour ? srgbToLinear(200.0f / 255.0f) : 200.0f / 255.0f;
+        for (int x = 0; x < 3; ++x)
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(t.texel(x, 0, c), want, 1e-4f) << (colour ? "colour" : "data") << " texel " << x;
+        if (!colour)
+            for (int x = 0; x < 3; ++x) EXPECT_NEAR(t.texel(x, 0, 3), (x == 0 ? 255 : x == 1 ? 128 : 0) / 255.0f, 1e-4f);
     }
 }
 

@@ -39,8 +39,11 @@ std::unique_ptr<OIIO::ImageInput> openAs(const std::string& format, const std::s
         error = "OpenImageIO's " + format + " reader cannot read from memory";
         return nullptr;
     }
-    OIIO::ImageSpec spec;
-    if (!in->open(name, spec)) {
+    // Colour and alpha as stored: OpenImageIO premultiplies unassociated alpha (PNG, TIFF, TGA)
+    // unless told not to, and glTF's alpha is coverage only, never a factor of the colour.
+    OIIO::ImageSpec spec, config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    if (!in->open(name, spec, config)) {
         error = in->geterror();
         if (error.empty()) error = OIIO::geterror();
         if (error.empty()) error = "not a valid " + format + " file";
