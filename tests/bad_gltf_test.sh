@@ -235,7 +235,7 @@ check gltf_offset_strings 1 'offset_strings.gltf: material 0 "Tile": pbrMetallic
 check gltf_range_tiny 1 "range_tiny.gltf: light 0: range 1e-300 underflows float (0 would mean no range)" render range_tiny.gltf -o out/a.exr
 check gltf_ortho_tiny 1 'ortho_tiny.gltf: camera "Down": its orthographic half-height 1e-30 is outside [0.001, 1e12]' render ortho_tiny.gltf -o out/a.exr
 check gltf_yfov_tiny 1 'yfov_tiny.gltf: camera "Wide": its field of view 0 degrees is outside [0.01, 180)' render yfov_tiny.gltf -o out/a.exr
-check gltf_aspect_huge 1 'aspect_huge.gltf: camera "Wide": its aspect ratio inf is outside [1/65536, 65536]' render aspect_huge.gltf -o out/a.exr
+check gltf_aspect_huge 1 'aspect_huge.gltf: camera "Wide": its aspect ratio 1e+39 is outside [1/65536, 65536]' render aspect_huge.gltf -o out/a.exr
 check gltf_texcoord1_missing 1 'texcoord1_missing.gltf: mesh 0 primitive 0: its material 0 reads textures through TEXCOORD_1, which the primitive does not have' render texcoord1_missing.gltf -o out/a.exr
 check gltf_no_attributes 1 'no_attributes.gltf: mesh 1 primitive 0: attributes is missing' render no_attributes.gltf -o out/a.exr
 check gltf_wrap_float 1 'wrap_float.gltf: sampler 0: wrapS must be an integer, found 33071.0' render wrap_float.gltf -o out/a.exr
@@ -276,6 +276,39 @@ check gltf_texture_huge 1 'texture_huge.gltf: material "Tile": its emission text
 check gltf_uv_huge 0 '), 0 discarded samples,' render uv_huge.gltf -spp 4 --res 16x16 -o uv_huge.exr
 counts=$(oiiotool --stats uv_huge.exr 2>&1 | grep -E 'NanCount|InfCount')
 [[ $(grep -cE '(Nan|Inf)Count: (0 )+$' <<< "$counts") -eq 2 ]] || fail "gltf_uv_huge: the image holds NaN or Inf: $counts"
+
+# Issue 35: values float rounds to 0 (which would mean "not orthographic", "no aspect ratio")
+# meet the rule of any other value outside the range; a JPEG cut short or damaged is refused as a
+# PNG is, from a file and from a data URI.
+g plane_point.gltf ortho_1e300 'd["cameras"][0]["orthographic"].update(xmag=1e-300, ymag=1e-300)'
+g plane_point.gltf ortho_1e40 'd["cameras"][0]["orthographic"].update(xmag=1e-40, ymag=1e-40)'
+g plane_point.gltf ortho_xmag_1e300 'd["cameras"][0]["orthographic"].update(xmag=1e-300)'
+g cameras.gltf aspect_1e300 'd["cameras"][0]["perspective"]["aspectRatio"] = 1e-300'
+check gltf_ortho_1e300 1 'ortho_1e300.gltf: camera "Down": its orthographic half-height 1e-300 is outside [0.001, 1e12]' render ortho_1e300.gltf -o out/a.exr
+check gltf_ortho_1e40 1 'ortho_1e40.gltf: camera "Down": its orthographic half-height 1e-40 is outside [0.001, 1e12]' render ortho_1e40.gltf -o out/a.exr
+check gltf_ortho_xmag_1e300 1 'ortho_xmag_1e300.gltf: camera "Down": its aspect ratio 5e-301 is outside [1/65536, 65536]' render ortho_xmag_1e300.gltf -o out/a.exr
+check gltf_aspect_1e300 1 'aspect_1e300.gltf: camera "Wide": its aspect ratio 1e-300 is outside [1/65536, 65536]' render aspect_1e300.gltf -o out/a.exr
+oiiotool --pattern checker:width=16:height=16 256x256 3 -d uint8 -o whole.jpg >/dev/null 2>&1
+head -c 1300 whole.jpg > cut.jpg
+/usr/bin/python3 -c "b = bytearray(open('whole.jpg', 'rb').read()); b[1300:1500] = b'Z' * 200; open('garbled.jpg', 'wb').write(b)"
+g textured.gltf jpeg_cut 'd["images"][0] = {"uri": "cut.jpg"}'
+g textured.gltf jpeg_garbled 'd["images"][0] = {"uri": "garbled.jpg"}'
+g textured.gltf jpeg_cut_data_uri 'import base64; d["images"][0] = {"uri": "data:image/jpeg;base64," + base64.b64encode(open("cut.jpg", "rb").read()).decode()}'
+g textured.gltf jpeg_whole 'd["images"][0] = {"uri": "whole.jpg"}'
+check gltf_jpeg_cut 1 'jpeg_cut.gltf: material 0 "Tile" baseColorTexture: image 0: cannot read texture "cut.jpg": the file is damaged or cut short (JPEG error: Premature end of JPEG file' render jpeg_cut.gltf -o out/a.exr
+check gltf_jpeg_garbled 1 'jpeg_garbled.gltf: material 0 "Tile" baseColorTexture: image 0: cannot read texture "garbled.jpg": the file is damaged or cut short (JPEG error: Corrupt JPEG data' render jpeg_garbled.gltf -o out/a.exr
+check gltf_jpeg_cut_data_uri 1 'jpeg_cut_data_uri.gltf: material 0 "Tile" baseColorTexture: image 0: cannot read texture "jpeg_cut_data_uri.gltf image 0": the file is damaged or cut short' render jpeg_cut_data_uri.gltf -o out/a.exr
+check gltf_jpeg_whole 0 '-> out/a.exr' render jpeg_whole.gltf -spp 1 --res 8x8 -o out/a.exr
+# A normal map of one or two channels (grey, grey and alpha) is dropped with a warning naming
+# it, as the MTL's norm is; it was read as three channels, past the end of its texels.
+oiiotool --create 4x4 1 -d uint8 -o grey.png >/dev/null 2>&1
+oiiotool --create 4x4 2 -d uint8 -o grey_alpha.png >/dev/null 2>&1
+g tangents.gltf normal_grey 'd["images"][0] = {"uri": "grey.png"}'
+g tangents.gltf normal_grey_alpha 'd["images"][0] = {"uri": "grey_alpha.png"}'
+g clearcoat.gltf coat_normal_grey '[m for m in d["materials"] if m["name"] == "TexturedCoat"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatNormalTexture"]["index"] = len(d["textures"]); d["textures"].append({"source": len(d["images"])}); d["images"].append({"uri": "grey.png"})'
+check gltf_normal_grey 0 'normal_grey.gltf: material 0 "Mapped" normalTexture: image "grey.png" has 1 channel (grey); a normal map needs RGB, so it is ignored' render normal_grey.gltf -spp 1 --res 8x8 -o out/a.exr
+check gltf_normal_grey_alpha 0 'normal_grey_alpha.gltf: material 0 "Mapped" normalTexture: image "grey_alpha.png" has 2 channels (grey and alpha); a normal map needs RGB' render normal_grey_alpha.gltf -spp 1 --res 8x8 -o out/a.exr
+check gltf_coat_normal_grey 0 'KHR_materials_clearcoat clearcoatNormalTexture: image "grey.png" has 1 channel (grey)' render coat_normal_grey.gltf -spp 1 --res 8x8 -o out/a.exr
 
 # Warnings: values the specification defines but that are likely mistakes.
 g tangents.gltf tangent_w0 'd["accessors"][4]["bufferView"] = view(f32(*[1, 0, 0, 0] * 4))'

@@ -5,6 +5,7 @@
 #include "io/input_file.h"
 #include "core/system.h"
 #include "scene/scene_limits.h"
+#include "scene/scene_loader.h"
 #include "core/math.h"
 #include "scene/text_parser.h"
 #include "texture/texture_io.h"
@@ -432,6 +433,19 @@ private:
         return map;
     }
 
+    // A normal map needs three channels (x, y, z): one of one or two (grey, grey and alpha) is
+    // dropped with a warning naming it, as the MTL's norm does, instead of being read past its texels.
+    TextureMap normalMapOf(TextureMap map, const std::string& what) {
+        if (!map.used()) return map;
+        const Texture& t = (*scene_.textures)[map.texture];
+        int colourChannels = t.hasAlpha() ? t.channels - 1 : t.channels;
+        if (colourChannels >= 3) return map;
+        warnings_.add(what + ": image \"" + t.path + "\" has " + std::to_string(t.channels) + " channel" +
+                      (t.channels == 1 ? "" : "s") + (t.hasAlpha() ? " (grey and alpha)" : " (grey)") +
+                      "; a normal map needs RGB, so it is ignored and the surface keeps its interpolated normals");
+        return TextureMap{};
+    }
+
     // A normal texture's scale, refused (naming it as `label`) where the perturbed normal's length
     // would overflow float.
     static float normalScale(double scale, const std::string& label) {
@@ -572,7 +586,8 @@ private:
                 m.clearcoatMap.channel = TextureChannel::R;
                 m.clearcoatRoughnessMap = extensionTexture(e->second, "clearcoatRoughnessTexture", ext + " clearcoatRoughnessTexture");
                 m.clearcoatRoughnessMap.channel = TextureChannel::G;
-                m.clearcoatNormalMap = extensionTexture(e->second, "clearcoatNormalTexture", ext + " clearcoatNormalTexture");
+                m.clearcoatNormalMap = normalMapOf(extensionTexture(e->second, "clearcoatNormalTexture", ext + " clearcoatNormalTexture"),
+                                                   ext + " clearcoatNormalTexture");
             }
         }
         if (auto e = g.extensions.find("KHR_materials_sheen"); e != g.extensions.end()) {
@@ -625,6 +640,7 @@ private:
             m.normalMap = textureMap(g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions, false,
                                      what + " normalTexture");
             m.normalMap.bumpScale = normalScale(g.normalTexture.scale, what + ": normalTexture.scale");
+            m.normalMap = normalMapOf(m.normalMap, what + " normalTexture");
         }
         float strength = 1.0f;
         if (auto e = g.extensions.find("KHR_materials_emissive_strength");
@@ -686,14 +702,27 @@ private:
             double fov = g.perspective.yfov * 180.0 / M_PI;
             if (!(fov > 0.0 && fov < 180.0)) throw LoadError(what + ": yfov " + shortNumber(g.perspective.yfov) + " must be in (0, pi)");
             c.fovY = float(fov);
-            if (g.perspective.aspectRatio > 0.0) c.aspect = float(g.perspective.aspectRatio);
+            if (g.perspective.aspectRatio > 0.0) c.aspect = aspectOf(c, g.perspective.aspectRatio);
         } else { // orthographic: gltf_document allows no other type
             double ymag = std::abs(g.orthographic.ymag), xmag = std::abs(g.orthographic.xmag);
             if (!(ymag > 0.0 && xmag > 0.0)) throw LoadError(what + ": xmag and ymag must not be zero");
+            // A value float loses (to 0, which means "not orthographic", or to a denormal) meets
+            // checkCamera's rule here, named as the file gives it.
+            if (float h = float(ymag); !(std::isnormal(h) && h <= kMaxCoordinate))
+                throw LoadError(path_ + ": camera \"" + c.name + "\": " + orthoHalfHeightProblem(ymag, c.position));
             c.orthoHalfHeight = float(ymag);
-            c.aspect = float(xmag / ymag);
+            c.aspect = aspectOf(c, xmag / ymag);
         }
         scene_.cameras.push_back(c);
+    }
+
+    // A camera's aspect ratio, checked in double: one that float rounds to 0 (which means "none
+    // given") or to infinity is refused as any other outside the range.
+    float aspectOf(const Camera& c, double aspect) const {
+        if (!(aspect >= 1.0 / kMaxAspect && aspect <= kMaxAspect))
+            throw LoadError(path_ + ": camera \"" + c.name + "\": its aspect ratio " + shortNumber(aspect) +
+                            " is outside [1/65536, 65536]");
+        return float(aspect);
     }
 
     void addLight(int index, const glm::dmat4& world, const std::string& where) {

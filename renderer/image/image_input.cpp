@@ -128,6 +128,15 @@ std::string openImageWhole(const std::string& path, uint64_t maxBytes, WholeImag
     return error;
 }
 
+std::string readPixels(OIIO::ImageInput& in, int channels, OIIO::TypeDesc type, void* data) {
+    (void)in.geterror(); // clears what earlier calls left (a seek past the last subimage says so)
+    bool read = in.read_image(0, 0, 0, channels, type, data);
+    std::string error = in.geterror();
+    if (read && error.empty()) return "";
+    if (error.empty()) error = "the decoder failed without saying why";
+    return read ? "the file is damaged or cut short (" + error + ")" : error;
+}
+
 std::unique_ptr<OIIO::ImageInput> openImageMemory(const std::vector<unsigned char>& bytes,
                                                   MemoryImageReader& reader, const std::string& name,
                                                   std::string& error) {

@@ -66,4 +66,10 @@ std::unique_ptr<OIIO::ImageInput> openImageMemory(const std::vector<unsigned cha
                                                   MemoryImageReader& reader, const std::string& name,
                                                   std::string& error);
 
+// Reads channels [0, channels) of every pixel of the current subimage into `data`, as `type`.
+// OpenImageIO's JPEG and TIFF readers report a file that is cut short or damaged only by an error
+// message beside a read that succeeds (the missing part decoded as flat grey): that is a failure
+// here too. "" or the decoder's message.
+std::string readPixels(OIIO::ImageInput& in, int channels, OIIO::TypeDesc type, void* data);
+
 } // namespace pt

@@ -158,8 +158,8 @@ static std::string decodeImage(OIIO::ImageInput* in, const std::string& path, Im
     } catch (const std::bad_alloc&) {
         return "\"" + path + "\": out of memory for its " + std::to_string(w) + "x" + std::to_string(h) + " pixels";
     }
-    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, pixels.data()))
-        return "cannot read \"" + path + "\": " + in->geterror();
+    if (std::string error = readPixels(*in, nc, OIIO::TypeDesc::FLOAT, pixels.data()); !error.empty())
+        return "cannot read \"" + path + "\": " + error;
 
     image = Image{};
     image.width = w;

@@ -88,8 +88,8 @@ EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees
     map.scale = scale;
     int read = nc >= 3 ? 3 : 1;
     std::vector<float> values(size_t(w) * size_t(h) * size_t(read));
-    if (!in->read_image(0, 0, 0, read, OIIO::TypeDesc::FLOAT, values.data()))
-        throw LoadError("cannot read environment map \"" + path + "\": " + in->geterror());
+    if (std::string error = readPixels(*in, read, OIIO::TypeDesc::FLOAT, values.data()); !error.empty())
+        throw LoadError("cannot read environment map \"" + path + "\": " + error);
     for (size_t i = 0; i < values.size(); ++i) {
         float v = values[i];
         if (!std::isfinite(v) || v < 0.0f) {

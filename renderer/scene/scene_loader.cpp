@@ -46,6 +46,15 @@ static Camera frameScene(const Scene& scene) {
     return c;
 }
 
+std::string orthoHalfHeightProblem(double halfHeight, const Vec3& position) {
+    float distance = std::max({std::abs(position.x), std::abs(position.y), std::abs(position.z)});
+    double least = std::max(kMinSceneSize, kMinOrthoFraction * distance);
+    if (halfHeight >= least && halfHeight <= kMaxCoordinate) return "";
+    return "its orthographic half-height " + shortNumber(halfHeight) + " is outside [" + shortNumber(least) +
+           ", 1e12]: below, neighbouring pixels' rays start at one float point (1e-4 of its distance from the origin, "
+           "and at least 1e-6)";
+}
+
 static bool withinCoordinates(const Vec3& p) {
     return std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate && std::abs(p.z) <= kMaxCoordinate;
 }
@@ -62,12 +71,8 @@ static void checkCamera(const Scene& scene, const Camera& c) {
     if (!(safeLength(glm::cross(forward, safeNormalize(c.up))) > 1e-6f))
         throw LoadError(what + "its up direction is zero or parallel to its view direction");
     if (c.orthoHalfHeight > 0.0f) {
-        float distance = std::max({std::abs(c.position.x), std::abs(c.position.y), std::abs(c.position.z)});
-        float least = std::max(kMinSceneSize, kMinOrthoFraction * distance);
-        if (!(c.orthoHalfHeight >= least && c.orthoHalfHeight <= kMaxCoordinate))
-            throw LoadError(what + "its orthographic half-height " + shortNumber(c.orthoHalfHeight) + " is outside [" +
-                            shortNumber(least) + ", 1e12]: below, neighbouring pixels' rays start at one float point "
-                            "(1e-4 of its distance from the origin, and at least 1e-6)");
+        if (std::string problem = orthoHalfHeightProblem(c.orthoHalfHeight, c.position); !problem.empty())
+            throw LoadError(what + problem);
     } else if (!(c.fovY >= kMinFieldOfView && c.fovY < 180.0f)) {
         throw LoadError(what + "its field of view " + shortNumber(c.fovY) + " degrees is outside [0.01, 180), where "
                         "neighbouring pixels' ray directions differ in float");

@@ -24,6 +24,11 @@ void completeScene(Scene& scene, Warnings& warnings);
 // Call after the command line has set the environment.
 void addDefaultLighting(Scene& scene, Warnings& warnings);
 
+// "" where an orthographic camera at `position` may have half-height `halfHeight`, else why not
+// ("its orthographic half-height ... is outside ..."). In double, so that a file's value that
+// float would round to 0 (which means "not orthographic") meets the same rule as any other.
+std::string orthoHalfHeightProblem(double halfHeight, const Vec3& position);
+
 // Axis-aligned bounds of all triangle vertices and lights.
 void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi);
 

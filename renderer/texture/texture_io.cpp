@@ -62,8 +62,8 @@ bool decodeTexture(OIIO::ImageInput& imageInput, const std::string& path, bool c
         texture.data.assign(size_t(w) * size_t(h) * texelBytes, 0);
         std::vector<uint8_t> grey(read < stored ? size_t(w) * size_t(h) * size_t(bpc) : 0);
         uint8_t* target = grey.empty() ? texture.data.data() : grey.data();
-        if (!in->read_image(0, 0, 0, read, type, target)) {
-            error = "cannot read texture \"" + path + "\": " + in->geterror();
+        if (std::string problem = readPixels(*in, read, type, target); !problem.empty()) {
+            error = "cannot read texture \"" + path + "\": " + problem;
             texture.data.clear();
             return false;
         }
