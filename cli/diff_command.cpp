@@ -143,19 +143,36 @@ int diffCommand(int argc, char** argv) {
         }
     }
     bool sameSize = test.width == reference.width && test.height == reference.height; // else compareImages says so
-    if (sameSize && test.channelNames != reference.channelNames) {
+    // The spp layer is no picture but each pixel's count, which weighs it: one image may have it
+    // (an adaptive render) and the other not (a uniform one, whose count is pt:spp).
+    auto compared = [](const Image& image) {
+        std::vector<std::string> names;
+        for (const std::string& c : image.channelNames)
+            if (c != "spp.Z") names.push_back(c);
+        return names;
+    };
+    if (sameSize && compared(test) != compared(reference)) {
         auto list = [](const std::vector<std::string>& names) {
             std::string s;
             for (const std::string& n : names) s += (s.empty() ? "" : ",") + n;
             return s;
         };
         std::fprintf(err, "pt diff: %s and %s have different channels (%s against %s); render both with the same --aov\n",
-                     files[0].c_str(), files[1].c_str(), list(test.channelNames).c_str(),
-                     list(reference.channelNames).c_str());
+                     files[0].c_str(), files[1].c_str(), list(compared(test)).c_str(),
+                     list(compared(reference)).c_str());
         return 2;
     }
-    options.testSpp = samplesPerPixel(test);
-    options.referenceSpp = samplesPerPixel(reference);
+    // Each pixel's count weighs its variance (statistical comparisons only).
+    if (varianceLayer(test) && varianceLayer(reference)) {
+        std::string testError, referenceError;
+        options.testCounts = pixelSampleCounts(test, testError);
+        options.referenceCounts = pixelSampleCounts(reference, referenceError);
+        for (auto [path, error] : {std::pair{&files[0], &testError}, std::pair{&files[1], &referenceError}})
+            if (!error->empty()) {
+                std::fprintf(err, "pt diff: %s: %s\n", path->c_str(), error->c_str());
+                return 2;
+            }
+    }
     CompareReport r = compareImages(test, reference, options, threshold);
     if (!r.inputError.empty()) {
         std::fprintf(err, "pt diff: %s vs %s: %s\n", files[0].c_str(), files[1].c_str(), r.inputError.c_str());

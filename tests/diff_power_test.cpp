@@ -40,8 +40,9 @@ protected:
     }
     static CompareReport compare(const Image& test) {
         CompareOptions o;
-        o.testSpp = kTestSpp;
-        o.referenceSpp = samplesPerPixel(*reference_);
+        std::string error;
+        o.testCounts.assign(size_t(kSize) * kSize, float(kTestSpp));
+        o.referenceCounts = pixelSampleCounts(*reference_, error);
         return compareImages(test, *reference_, o);
     }
     static float& at(Image& img, int x, int y, int c) { return img.rgb[3 * (size_t(y) * kSize + x) + c]; }

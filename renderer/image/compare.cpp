@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace pt {
 
@@ -22,6 +23,30 @@ double samplesPerPixel(const Image& image) {
             }
         }
     return 0.0;
+}
+
+std::vector<float> pixelSampleCounts(const Image& image, std::string& error) {
+    error.clear();
+    const size_t n = size_t(image.width) * size_t(image.height);
+    for (const ImageLayer& l : image.layers) {
+        if (l.name != "spp" || l.channels.size() != 1 || l.pixels.size() != n) continue;
+        for (size_t i = 0; i < n; ++i)
+            if (!(l.pixels[i] >= 0.0f && l.pixels[i] <= 16777216.0f && l.pixels[i] == std::floor(l.pixels[i]))) {
+                error = "its spp layer holds " + std::to_string(l.pixels[i]) + " at pixel (" + std::to_string(i % image.width) +
+                        ", " + std::to_string(i / image.width) + "), which is not a count of samples";
+                return {};
+            }
+        return l.pixels;
+    }
+    for (const ImageAttribute& a : image.metadata)
+        if (a.name == "pt:sppMax") {
+            error = "its pixels hold different sample counts (pt:spp " + std::to_string(long(samplesPerPixel(image))) +
+                    ", pt:sppMax " + a.asText() + ") and it has no spp layer to say which; render it again with "
+                    "--aov variance,spp so that each pixel is weighed by its own count";
+            return {};
+        }
+    double spp = samplesPerPixel(image);
+    return spp > 0 ? std::vector<float>(n, float(spp)) : std::vector<float>{};
 }
 
 double bonferroniZ(double alpha, double tests) {
@@ -46,9 +71,13 @@ static std::string findNonFinite(const Image& image, const char* which) {
             if (!std::isfinite(image.rgb[3 * i + c])) return where(i, std::isnan(image.rgb[3 * i + c]) ? "NaN" : "Inf");
     if (const ImageLayer* v = varianceLayer(image))
         for (size_t i = 0; i < n; ++i)
-            for (int c = 0; c < 3; ++c)
-                if (!std::isfinite(v->pixels[3 * i + c]) || v->pixels[3 * i + c] < 0)
-                    return where(i, "an invalid variance");
+            for (int c = 0; c < 3; ++c) {
+                float x = v->pixels[3 * i + c];
+                if (x == std::numeric_limits<float>::infinity()) // pt writes it where a pixel holds one sample
+                    return where(i, "no variance estimate (an infinite variance: a pixel of one sample; a variance "
+                                    "needs two)");
+                if (!std::isfinite(x) || x < 0) return where(i, "an invalid variance");
+            }
     return "";
 }
 
@@ -140,7 +169,11 @@ CompareReport compareImages(const Image& test, const Image& reference, const Com
         return r;
     }
 
-    const double sppRatio = options.testSpp > 0 && options.referenceSpp > 0 ? options.referenceSpp / options.testSpp : 0.0;
+    // Each test pixel's variance is at least the reference pixel's scaled to the test pixel's count.
+    const bool counts = options.testCounts.size() == n && options.referenceCounts.size() == n;
+    auto sppRatio = [&](size_t i) {
+        return counts && options.testCounts[i] > 0.0f ? double(options.referenceCounts[i]) / options.testCounts[i] : 0.0;
+    };
     const std::vector<Block> blocks = allBlocks(w, h, options);
     r.tests = 3 * blocks.size();
     r.zThreshold = bonferroniZ(options.falsePositiveRate, double(r.tests));
@@ -151,7 +184,9 @@ CompareReport compareImages(const Image& test, const Image& reference, const Com
         AreaSums st(w, h), sr(w, h), vT(w, h), vR(w, h);
         st.fill(h, [&](int x, int y) { return double(test.rgb[px(x, y)]); });
         sr.fill(h, [&](int x, int y) { return double(reference.rgb[px(x, y)]); });
-        vT.fill(h, [&](int x, int y) { return std::max(double(vt->pixels[px(x, y)]), sppRatio * vr->pixels[px(x, y)]); });
+        vT.fill(h, [&](int x, int y) {
+            return std::max(double(vt->pixels[px(x, y)]), sppRatio(size_t(y) * w + x) * vr->pixels[px(x, y)]);
+        });
         vR.fill(h, [&](int x, int y) { return double(vr->pixels[px(x, y)]); });
         for (const Block& b : blocks) {
             double count = double(b.x1 - b.x0) * (b.y1 - b.y0);

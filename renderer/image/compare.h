@@ -24,12 +24,14 @@ struct CompareOptions {
     // directly seen light, the sky) without hiding a real change of a percent or more.
     double relativeFloor = 1e-3;
     size_t worstCount = 10;
-    // Samples per pixel of each image, when known (0 if not; pt writes them as pt:spp). With
-    // both, the test image's variance is taken as at least the reference's scaled to the test's
-    // sample count: a low-sample variance estimate misses the rare, bright paths (caustics,
+    // Each pixel's sample count in each image, when known (empty if not; pixelSampleCounts). With
+    // both, a test pixel's variance is taken as at least the reference pixel's scaled to the test
+    // pixel's count: a low-sample variance estimate misses the rare, bright paths (caustics,
     // fireflies) exactly when the low-sample mean falls short of the reference, which would
-    // otherwise make the test fail far more often than falsePositiveRate.
-    double testSpp = 0, referenceSpp = 0;
+    // otherwise make the test fail far more often than falsePositiveRate. Per pixel, because an
+    // adaptive render's pixels hold from --min-spp to -spp samples: scaled by the fewest, every
+    // pixel's variance was inflated to the fewest's, and a light 2 % brighter passed.
+    std::vector<float> testCounts, referenceCounts;
 };
 
 struct BlockDifference {
@@ -55,8 +57,15 @@ struct CompareReport {
 // Finds the variance layer ("variance") of an image, or nullptr.
 const ImageLayer* varianceLayer(const Image& image);
 
-// Samples per pixel from pt's metadata (pt:spp), or 0.
+// Samples per pixel from pt's metadata (pt:spp: the fewest any pixel holds), or 0.
 double samplesPerPixel(const Image& image);
+
+// Each pixel's sample count: the image's `spp` layer (pt render and pt merge write one beside the
+// variance layer wherever pixels hold different counts), else pt:spp for every pixel where the
+// metadata says they hold the same (no pt:sppMax); empty where nothing says (another renderer's
+// file). `error` is set, and the result empty, where the pixels differ and no layer says how, or
+// the layer holds what cannot be a count.
+std::vector<float> pixelSampleCounts(const Image& image, std::string& error);
 
 // Without variance layers, `relativeMseThreshold` decides instead (not a statistical test).
 CompareReport compareImages(const Image& test, const Image& reference, const CompareOptions& options = {},

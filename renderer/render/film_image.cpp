@@ -29,7 +29,10 @@ Image filmImage(const Film& film, const AovSelection& aovs, double exposure, siz
     if (aovs.albedo) image.layers.push_back({"albedo", {"R", "G", "B"}, film.albedo()});
     if (aovs.normal) image.layers.push_back({"normal", {"X", "Y", "Z"}, film.normal()});
     if (aovs.depth) image.layers.push_back({"depth", {"Z"}, film.depth()});
-    if (aovs.spp) image.layers.push_back({"spp", {"Z"}, film.samples()});
+    // A variance of the mean is only half of what pt diff needs where pixels hold different
+    // counts (--noise, --time with --resume, merged parts): each pixel's count goes with it.
+    const Film::SampleCounts counts = film.sampleCounts();
+    if (aovs.spp || (aovs.variance && counts.fewest != counts.most)) image.layers.push_back({"spp", {"Z"}, film.samples()});
     return image;
 }
 
