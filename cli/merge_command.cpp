@@ -120,6 +120,8 @@ int mergeCommand(int argc, char** argv) {
     Image job; // the first part's metadata
     std::optional<Film> film;
     double seconds = 0.0;
+    bool adaptive = false; // a part rendered with --noise: its stopped pixels are counted
+    size_t converged = 0;
     bool budgeted = false; // parts stopped by --noise or --time: pixels short of -spp are expected
     for (const std::string& path : paths) {
         Image image;
@@ -157,6 +159,7 @@ int mergeCommand(int argc, char** argv) {
                 film->addPixel(size_t(y) * size_t(in.fullWidth) + size_t(x), part,
                                size_t(y - in.y0) * size_t(image.width) + size_t(x - in.x0));
         seconds += in.seconds;
+        if (part.hasConvergence()) adaptive = true, converged += part.convergedCount();
         budgeted |= !attributeText(image, "pt:noise").empty() || !attributeText(image, "pt:time").empty();
         merged.push_back({path, in, part.hasFirstHitLayers()});
     }
@@ -209,7 +212,14 @@ int mergeCommand(int argc, char** argv) {
             std::end(kPartOnly))
             image.metadata.push_back(a);
     }
-    image.metadata.push_back(ImageAttribute::integerValue("pt:spp", fewest));
+    // As pt render writes them: the fewest as pt:spp, and where pixels differ the most and the mean.
+    const Film::SampleCounts counts = film->sampleCounts();
+    image.metadata.push_back(ImageAttribute::integerValue("pt:spp", counts.fewest));
+    if (counts.most != counts.fewest) {
+        image.metadata.push_back(ImageAttribute::integerValue("pt:sppMax", counts.most));
+        image.metadata.push_back(ImageAttribute::floatValue("pt:sppMean", counts.mean));
+    }
+    if (adaptive) image.metadata.push_back(ImageAttribute::integerValue("pt:converged", (long long)converged));
     image.metadata.push_back(ImageAttribute::integerValue("pt:mergedParts", (long long)merged.size()));
     image.metadata.push_back(ImageAttribute::floatValue("pt:renderSeconds", seconds));
     if (std::string error = output.open(outputPath); !error.empty()) {
@@ -220,8 +230,13 @@ int mergeCommand(int argc, char** argv) {
         std::fprintf(err, "pt merge: error: %s\n", error.c_str());
         return 1;
     }
-    std::printf("pt merge: %zu parts, %dx%d, %u of %u spp in every pixel, %.3f s of rendering -> %s\n", merged.size(), width,
-                height, fewest, spp, seconds, outputPath.c_str());
+    char sppText[160];
+    if (counts.most == counts.fewest) std::snprintf(sppText, sizeof sppText, "%u of %u spp in every pixel", counts.fewest, spp);
+    else std::snprintf(sppText, sizeof sppText, "%u to %u of %u spp (mean %.1f)", counts.fewest, counts.most, spp, counts.mean);
+    std::string convergedText =
+        adaptive ? ", " + std::to_string(converged) + " of " + std::to_string(size_t(width) * height) + " pixels converged" : "";
+    std::printf("pt merge: %zu parts, %dx%d, %s%s, %.3f s of rendering -> %s\n", merged.size(), width, height, sppText,
+                convergedText.c_str(), seconds, outputPath.c_str());
     return 0;
 }
 

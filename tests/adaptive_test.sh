@@ -73,6 +73,29 @@ run "$pt" render "$scene" "${adaptive[@]}" --crop 0,20,64,48 -o c1.exr
 if "$pt" merge c0.exr c1.exr --aov spp -o merged.exr 2>merge.err >/dev/null && [[ ! -s merge.err ]]; then
   ok "noise: crops merge quietly"; else bad "noise crops: $(cat merge.err)"; fi
 
+# The merge says what pt render says of pixels that differ (issue 35: it wrote the fewest as
+# pt:spp alone and "8 of 256 spp in every pixel"): pt:sppMax, pt:sppMean, pt:converged and the range.
+"$pt" merge c0.exr c1.exr -o merged_meta.exr > merge.out 2>&1
+read -r lo hi mean < <(sppstats merged.exr)
+c0=$(meta c0.exr pt:converged) c1=$(meta c1.exr pt:converged)
+if [[ $(meta merged_meta.exr pt:spp) == "$lo" && $(meta merged_meta.exr pt:sppMax) == "$hi" && $lo -lt $hi &&
+      $(meta merged_meta.exr pt:converged) == $((c0 + c1)) ]] && grep -q "$lo to $hi of 256 spp (mean" merge.out &&
+   grep -q "$((c0 + c1)) of 3072 pixels converged" merge.out &&
+   /usr/bin/python3 -c "import sys; sys.exit(not abs(float('$(meta merged_meta.exr pt:sppMean)') - $mean) < 1e-3)"; then
+  ok "noise: merged crops record $lo to $hi spp (mean $mean), $((c0 + c1)) converged"
+else bad "noise merge metadata: $(cat merge.out); pt:spp $(meta merged_meta.exr pt:spp) pt:sppMax $(meta merged_meta.exr pt:sppMax) pt:converged $(meta merged_meta.exr pt:converged)"; fi
+
+# pt diff weighs each pixel by its own count, so an adaptive render's variance layer comes with its
+# spp layer even where --aov does not name it; an image whose pixels differ without that layer is
+# refused (exit 2) rather than compared as if every pixel held the fewest.
+run "$pt" render "$scene" --res 64x48 --noise 0.05 --min-spp 8 -spp 256 --aov variance -q -o var_only.exr
+channels=$(/usr/bin/python3 -c "import OpenImageIO as o,sys; print(','.join(o.ImageInput.open(sys.argv[1]).spec().channelnames))" var_only.exr)
+[[ $channels == *spp.Z* ]] && ok "noise: --aov variance brings the spp layer ($channels)" || bad "noise: --aov variance wrote $channels"
+oiiotool var_only.exr --ch R,G,B,variance.R,variance.G,variance.B -o no_counts.exr
+got=$("$pt" diff no_counts.exr var_only.exr 2>&1)
+[[ $? -eq 2 && $got == *"no_counts.exr: its pixels hold different sample counts (pt:spp 8, pt:sppMax "*"no spp layer"* ]] &&
+  ok "noise: pt diff refuses counts it cannot know" || bad "noise: pt diff without the spp layer: $got"
+
 # Interrupted and resumed: equals the adaptive render never stopped.
 long=(--res 64x48 --noise 0.004 --min-spp 16 -spp 2048 --aov spp -q)
 stop_part_way "$pt" whole.exr "$scene" "${long[@]}"
