@@ -55,10 +55,11 @@ options (default in brackets):
                          the time allows (every pixel has at least one sample); without
                          --noise the image equals -spp N for the N it reached [none]
   --noise E              adaptive sampling: a pixel stops once the standard error of its
-                         mean, relative to its brightness, is at most E (0.01 to 0.05 are
-                         typical; pooled over its 3x3 neighbours, decided between passes,
-                         so the image does not depend on --threads) [off]
-  --min-spp N            with --noise, samples every pixel takes before it may stop [16]
+                         mean, relative to its brightness, is at most E, in [1e-4, 1) (0.01
+                         to 0.05 are typical; pooled over its 3x3 neighbours, decided
+                         between passes, so the image does not depend on --threads) [off]
+  --min-spp N            with --noise, samples every pixel takes before it may stop
+                         [16, or -spp where that is smaller]
   --res WxH              image size in pixels [512x512; a glTF camera's aspect ratio
                          gives 512 across its longer side]
   --camera NAME|INDEX    camera by name, or by 0-based index in file order; a name two
@@ -131,6 +132,12 @@ exit status: 0 success, 1 bad input (scene, texture) or a failed write, 2 bad us
 constexpr double kMaxTimeBudget = 365.0 * 24 * 3600;
 // -spp when --time or --noise decide when to stop and -spp is not given: the cap of a pixel.
 constexpr long long kBudgetSppCap = 4096;
+// The smallest --noise: a pixel whose samples vary as much as their mean reaches E after 1 / E^2
+// samples, 1e8 at 1e-4, beyond the 2^24 a pixel may take. Below it no pixel would ever stop, and
+// in float it would round to 0, which means "off".
+constexpr double kMinNoise = 1e-4;
+const char* const kNoiseFloorReason =
+    " (below 1e-4 no pixel stops before the most samples a pixel takes, 2^24: leave --noise out and give -spp instead)";
 
 struct RenderArgs {
     std::string scene;
@@ -213,9 +220,9 @@ RenderArgs parseArgs(int argc, char** argv) {
                 throw UsageError("option " + args.spelled(opt) + ": expected a time in seconds above 0, got 0");
         } else if (opt == "noise") {
             double e = args.number(opt, 0.0, 1.0);
-            if (!(e > 0.0 && e < 1.0))
-                throw UsageError("option " + args.spelled(opt) + ": expected a relative error between 0 and 1 (exclusive), "
-                                 "such as 0.02, got " + shortNumber(e));
+            if (!(e >= kMinNoise && e < 1.0))
+                throw UsageError("option " + args.spelled(opt) + ": expected a relative error in [1e-4, 1), such as 0.02, "
+                                 "got " + shortNumber(e) + (e > 0.0 && e < kMinNoise ? kNoiseFloorReason : ""));
             r.budget.noise = float(e);
         } else if (opt == "min-spp") {
             r.budget.minSpp = uint32_t(args.integer(opt, 1, 1 << 24));
@@ -342,6 +349,8 @@ RenderArgs parseArgs(int argc, char** argv) {
                          " for this sun and turbidity");
     if (!r.sppGiven && (r.budget.seconds > 0.0 || r.budget.adaptive())) r.spp = kBudgetSppCap;
     if (r.minSppGiven && !r.budget.adaptive()) throw UsageError("--min-spp needs --noise");
+    // The default --min-spp follows a smaller -spp; one the user typed above -spp is refused.
+    if (r.budget.adaptive() && !r.minSppGiven) r.budget.minSpp = uint32_t(std::min<long long>(r.budget.minSpp, r.spp));
     if (r.budget.adaptive() && r.budget.minSpp > r.spp)
         throw UsageError("--min-spp " + std::to_string(r.budget.minSpp) + " is above -spp " + std::to_string(r.spp) +
                          ", the most samples a pixel takes");

@@ -43,8 +43,14 @@ expect 2 "option --time: expected a time in seconds above 0, got 0" "$pt" render
 expect 2 "option --time: -1 is out of range" "$pt" render "$scene" --time -1 -o "$tmp/out.exr"
 expect 2 "option --time: expected a finite number, got \"nan\"" "$pt" render "$scene" --time nan -o "$tmp/out.exr"
 expect 2 "option --time: 4e7 is out of range [0, 3.1536e+07]" "$pt" render "$scene" --time 4e7 -o "$tmp/out.exr"
-expect 2 "option --noise: expected a relative error between 0 and 1 (exclusive), such as 0.02, got 0" "$pt" render "$scene" --noise 0 -o "$tmp/out.exr"
-expect 2 "option --noise: expected a relative error between 0 and 1 (exclusive), such as 0.02, got 1" "$pt" render "$scene" --noise 1 -o "$tmp/out.exr"
+expect 2 "option --noise: expected a relative error in [1e-4, 1), such as 0.02, got 0" "$pt" render "$scene" --noise 0 -o "$tmp/out.exr"
+expect 2 "option --noise: expected a relative error in [1e-4, 1), such as 0.02, got 1" "$pt" render "$scene" --noise 1 -o "$tmp/out.exr"
+# Issue 35: values below the floor were taken as off (1e-50 rounds to 0 in float) or stored as 0.
+expect 2 "option --noise: expected a relative error in [1e-4, 1), such as 0.02, got 1e-50 (below 1e-4 no pixel stops" "$pt" render "$scene" --noise 1e-50 --min-spp 4 -o "$tmp/out.exr"
+expect 2 "option --noise: expected a relative error in [1e-4, 1), such as 0.02, got 1e-40 (below 1e-4" "$pt" render "$scene" --noise 1e-40 -o "$tmp/out.exr"
+expect 2 "got 9.99e-05 (below 1e-4" "$pt" render "$scene" --noise 9.99e-5 -o "$tmp/out.exr"
+# The default --min-spp (16) follows a smaller -spp; a typed one above -spp is refused.
+expect 0 "8x8, 8 spp" "$pt" render "$scene" --noise 0.1 -spp 8 --res 8x8 -o "$tmp/min_spp_follows.exr"
 expect 2 "option --noise: 2 is out of range [0, 1]" "$pt" render "$scene" --noise 2 -o "$tmp/out.exr"
 expect 2 "option --noise: expected a finite number" "$pt" render "$scene" --noise inf -o "$tmp/out.exr"
 expect 2 "--min-spp 64 is above -spp 32" "$pt" render "$scene" --noise 0.02 --min-spp 64 -spp 32 -o "$tmp/out.exr"
