@@ -210,6 +210,44 @@ def to_extension_absorption(node):
     print(f"volume absorption: colour {c}, 1/d {per_distance} -> sigma {sigma}", file=sys.stderr)
 
 
+def default_materials(doc):
+    """The specification's default material (white, metallic 1, roughness 1) where a primitive
+    names none, as pt gives it. The importer leaves such faces without a material (Cycles then
+    shades them grey diffuse), or, with COLOR_0, gives them Blender's default Principled BSDF
+    (metallic 0, roughness 0.5) over the vertex colour."""
+    ours = None
+
+    def default():
+        nonlocal ours
+        if ours is None:
+            ours = bpy.data.materials.new("gltf-default")
+            tree = ours.node_tree
+            tree.nodes.clear()
+            bsdf = tree.nodes.new("ShaderNodeBsdfPrincipled")
+            tree.links.new(bsdf.outputs[0], tree.nodes.new("ShaderNodeOutputMaterial").inputs["Surface"])
+        return ours
+
+    for mesh in bpy.data.meshes:
+        for i, m in enumerate(mesh.materials):
+            if m is None:
+                mesh.materials[i] = default()
+        if len(mesh.materials) == 0 and len(mesh.polygons) > 0:
+            mesh.materials.append(default())
+    file_names = {m.get("name") for m in doc.get("materials", [])}
+    for mat in bpy.data.materials:
+        importer_default = mat.name.split(".")[0] == "DefaultMaterial" and mat.name not in file_names
+        if mat is not ours and not importer_default:
+            continue
+        for n in mat.node_tree.nodes:
+            if n.type == "BSDF_PRINCIPLED":
+                if not n.inputs["Base Color"].is_linked:
+                    n.inputs["Base Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+                n.inputs["Metallic"].default_value = 1.0
+                n.inputs["Roughness"].default_value = 1.0
+                print(f"material {mat.name}: the specification's default (white, metallic 1, roughness 1)",
+                      file=sys.stderr)
+
+
 def set_world(scene, lights, env):
     """pt's environment: its map with --env (rotation, scale), else white without lights, black with."""
     world = bpy.data.worlds.new("pt-environment")
@@ -261,6 +299,7 @@ def build(path, width, height, camera_spec, max_depth, env):
                                       for i, c in enumerate(cameras)) + f"; rendering {index}", file=sys.stderr)
     bpy.ops.import_scene.gltf(filepath=os.path.abspath(path))
     scene = bpy.context.scene
+    default_materials(doc)
     for mat in bpy.data.materials:
         for n in mat.node_tree.nodes if mat.node_tree else []:
             if n.type == "BSDF_PRINCIPLED":
