@@ -67,6 +67,13 @@ channels=$(oiiotool --info -v "$tmp/a.exr" | grep "channel list")
 for c in R G B variance.R albedo.G normal.Z depth.Z; do
   [[ "$channels" == *"$c"* ]] || { echo "FAIL: $c missing from $channels"; failures=$((failures + 1)); }
 done
+# One sample has no variance estimate: the layer holds +inf (unknown) there, never 0 (certain),
+# and pt diff refuses to compare it, naming the pixel.
+expect 0 "8x8, 1 spp" "$pt" render "$scene" -spp 1 --res 8x8 --aov variance -o "$tmp/one.exr"
+[[ $(oiiotool --stats "$tmp/one.exr" | grep InfCount) == *"0 0 0 64 64 64"* ]] ||
+  { echo "FAIL: the variance of one sample: $(oiiotool --stats "$tmp/one.exr" | grep -E 'InfCount|Max')"; failures=$((failures + 1)); }
+expect 2 "test image has no variance estimate (an infinite variance: a pixel of one sample; a variance needs two) at pixel (0, 0)" \
+  "$pt" diff "$tmp/one.exr" "$tmp/one.exr"
 expect 0 "16x16, 4 spp" "$pt" render "$scene" -spp 4 --res 16x16 --camera Front -o "$tmp/a.png"
 expect 0 "8x8, 2 spp" "$pt" render "$scene" -spp 2 --res 8x8 --sky --sun-elevation 30 --sun-azimuth 250 --turbidity 4.5 --sky-scale 0.5 -o "$tmp/sky.exr"
 "$pt" render "$scene" -spp 2 --res 8x8 --seed 3 -q -o "$tmp/ev0.exr" > /dev/null

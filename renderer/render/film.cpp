@@ -32,7 +32,9 @@ std::vector<float> Film::mean() const {
 }
 
 std::vector<float> Film::varianceOfMean() const {
-    std::vector<float> out(sum_.size() * 3, 0.0f);
+    // A pixel of fewer than two samples has no estimate of its variance: +inf says "unknown", where
+    // 0 would say "certain" (pt diff refuses it, naming the pixel).
+    std::vector<float> out(sum_.size() * 3, std::numeric_limits<float>::infinity());
     for (size_t i = 0; i < sum_.size(); ++i) {
         double n = count_[i];
         if (n < 2) continue;

@@ -62,7 +62,7 @@ public:
 
     // Interleaved RGB float images of the mean and of its variance (sample variance / n).
     std::vector<float> mean() const;
-    std::vector<float> varianceOfMean() const;
+    std::vector<float> varianceOfMean() const; // +inf where a pixel holds fewer than 2 samples
     std::vector<float> samples() const; // each pixel's count, as float (exact below 2^24)
 
     // Adaptive sampling (render/convergence.h): which pixels have stopped, and the sample count

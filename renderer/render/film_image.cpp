@@ -13,6 +13,7 @@ Image filmImage(const Film& film, const AovSelection& aovs, double exposure, siz
     overflowed = 0;
     auto scale = [&](std::vector<float>& values, double gain) {
         for (float& v : values) {
+            if (std::isinf(v)) continue; // a variance that is unknown (one sample) stays so
             double x = double(v) * gain;
             if (!(std::abs(x) <= double(std::numeric_limits<float>::max()))) {
                 ++overflowed;
