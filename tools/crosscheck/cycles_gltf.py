@@ -297,8 +297,18 @@ def build(path, width, height, camera_spec, max_depth, env):
     chosen = cameras[index]
     print("pt's cameras: " + ", ".join(f'{i} "{c["name"]}"' + (f' (node {c["node"]})' if "node" in c else "")
                                       for i, c in enumerate(cameras)) + f"; rendering {index}", file=sys.stderr)
-    bpy.ops.import_scene.gltf(filepath=os.path.abspath(path))
+    # pt renders the default scene alone (the file's "scene", else its first), or every root node
+    # of a file without scenes. The importer puts the default scene's objects in this Blender scene
+    # (other scenes in scenes of their own, not rendered, once it does not make collections of
+    # them), and nodes of no scene in an "Orphan Nodes" collection here, unlinked below.
+    bpy.ops.import_scene.gltf(filepath=os.path.abspath(path), import_scene_as_collection=False)
     scene = bpy.context.scene
+    if doc.get("scenes"):
+        for parent in [scene.collection, *scene.collection.children_recursive]:
+            for child in list(parent.children):
+                if child.name.split(".")[0] == "Orphan Nodes":
+                    print(f"leaving out {len(child.all_objects)} objects of nodes in no scene", file=sys.stderr)
+                    parent.children.unlink(child)
     default_materials(doc)
     for mat in bpy.data.materials:
         for n in mat.node_tree.nodes if mat.node_tree else []:
