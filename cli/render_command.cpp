@@ -749,10 +749,12 @@ int renderCommand(int argc, char** argv) {
 
     if (result.cancelled) {
         // Never replace OUT with a partial image: the finished samples go beside it.
+        // Every tile finished is kept, those of the first pass too (the pixels of tiles still in
+        // flight then hold no sample): only when none had finished is there nothing to write.
         int status = 128 + (stopSignal() ? stopSignal() : SIGINT);
-        uint32_t done = result.film.sampleCounts().fewest;
-        if (done == 0) {
-            std::fprintf(err, "pt: interrupted before every pixel had a sample; nothing written\n");
+        const Film::SampleCounts done = result.film.sampleCounts();
+        if (done.most == 0) {
+            std::fprintf(err, "pt: interrupted before any tile of the first pass was finished; nothing written\n");
             return status;
         }
         image.metadata.push_back(ImageAttribute::integerValue("pt:interrupted", 1));
@@ -760,9 +762,14 @@ int renderCommand(int argc, char** argv) {
         std::string error = partialFile.open(partial);
         if (error.empty()) error = writeImage(partialFile, image);
         if (!error.empty()) std::fprintf(err, "pt: error: interrupted, and the partial image was lost: %s\n", error.c_str());
-        else
-            std::fprintf(err, "pt: interrupted after %u of %lld spp; wrote them to %s (%s untouched)\n", done,
+        else if (done.fewest == done.most)
+            std::fprintf(err, "pt: interrupted after %u of %lld spp; wrote them to %s (%s untouched)\n", done.fewest,
                          args.spp, partial.c_str(), args.output.c_str());
+        else
+            std::fprintf(err, "pt: interrupted after %u to %u of %lld spp (mean %.2f)%s; wrote them to %s (%s untouched)\n",
+                         done.fewest, done.most, args.spp, done.mean,
+                         done.fewest == 0 ? ", pixels of the tiles in flight without a sample" : "", partial.c_str(),
+                         args.output.c_str());
         return status;
     }
     if (std::string error = writeImage(output, image); !error.empty()) {
