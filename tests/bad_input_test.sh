@@ -467,6 +467,23 @@ check resume_count_past_range 1 '--resume: lie_count.exr: pixel (0, 0) holds 8 s
 
 # A good image is never replaced by a failed render.
 "$pt" render m.obj -spp 1 --res 8x8 -q -o good.exr >/dev/null || fail "could not render good.exr"
+# Loops of symbolic links are named as loops, not as missing files or folders (issue 35).
+ln -s loop.obj loop.obj && ln -s loop.mtl loop.mtl && ln -s loop.png loop.png && ln -s loop.hdr loop.hdr && ln -s loopdir loopdir
+ln -s nothere.hdr dangling.hdr
+printf 'mtllib loop.mtl\n%sf 1 2 3\n' "$tri" > mtllib_loop.obj
+printf 'newmtl M\nmap_Kd loop.png\n' > map_loop.mtl
+printf 'mtllib map_loop.mtl\n%svt 0 0\nvt 1 0\nvt 0 1\nusemtl M\nf 1/1 2/2 3/3\n' "$tri" > map_loop.obj
+check scene_symlink_loop 1 'loop.obj: cannot open: Too many levels of symbolic links' render loop.obj -o out/a.exr
+check mtllib_symlink_loop 0 'mtllib_loop.obj:1: mtllib "loop.mtl" is a loop of symbolic links; faces using its materials get the default material' \
+  render mtllib_loop.obj -spp 1 --res 8x8 -o out/a.exr
+check texture_symlink_loop 0 'map_loop.mtl:2: map_Kd: texture "loop.png" is a loop of symbolic links; using the plain colour' \
+  render map_loop.obj -spp 1 --res 8x8 -o out/a.exr
+check env_symlink_loop 1 'environment map "loop.hdr" is a loop of symbolic links' render map_loop.obj --env loop.hdr -o out/a.exr
+check env_dangling_link 1 'environment map "dangling.hdr" is a symbolic link to a missing file' render map_loop.obj --env dangling.hdr -o out/a.exr
+ln -s loop.hdr.exr loop.hdr.exr 2>/dev/null
+check output_symlink_loop 2 'output "loop.hdr.exr" is a loop of symbolic links' render map_loop.obj -o loop.hdr.exr
+check output_folder_symlink_loop 2 'output "loopdir/a.exr": folder "loopdir" is a loop of symbolic links' render map_loop.obj -o loopdir/a.exr
+
 before=$(md5sum good.exr)
 check keeps_good_output 1 "cannot open" render missing.obj -spp 1 -o good.exr
 [[ "$(md5sum good.exr)" == "$before" ]] || fail "keeps_good_output: good.exr changed"

@@ -8,6 +8,19 @@
 
 namespace pt {
 
+std::string pathProblem(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0) return "";
+    const int error = errno;
+    if (error == ELOOP) return "is a loop of symbolic links";
+    if (error == ENOENT || error == ENOTDIR) {
+        struct stat link {};
+        if (::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) return "is a symbolic link to a missing file";
+        return "not found";
+    }
+    return std::string("cannot be reached (") + std::strerror(error) + ")";
+}
+
 std::string readRegularFile(const std::string& path, uint64_t maxBytes, std::vector<unsigned char>& bytes) {
     // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer.
     int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);

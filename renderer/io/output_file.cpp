@@ -1,5 +1,7 @@
 #include "io/output_file.h"
 
+#include "io/input_file.h"
+
 #include <atomic>
 #include <cerrno>
 #include <climits>
@@ -57,7 +59,11 @@ std::string checkOutputLocation(const std::string& path) {
     if (path.empty()) return "output: expected a file name";
     std::string dir = folderOf(path);
     struct stat st {};
-    if (stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) return quoted + ": folder \"" + dir + "\" does not exist";
+    if (stat(dir.c_str(), &st) != 0) {
+        std::string problem = pathProblem(dir);
+        return quoted + ": folder \"" + dir + "\" " + (problem == "not found" ? "does not exist" : problem);
+    }
+    if (!S_ISDIR(st.st_mode)) return quoted + ": \"" + dir + "\" is not a folder";
     if (access(dir.c_str(), W_OK) != 0) return quoted + ": folder \"" + dir + "\" is not writable";
     std::string name = fs::path(path).filename().string();
     if (name.empty() || name == "." || name == "..") return quoted + ": expected a file name, not a folder";
@@ -69,8 +75,8 @@ std::string checkOutputLocation(const std::string& path) {
         if (!S_ISREG(st.st_mode)) return quoted + " exists and is not a regular file";
         return "";
     }
-    struct stat lst {};
-    if (lstat(path.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode)) return quoted + " is a symbolic link to a missing file";
+    // A dangling link, or a loop of links, is refused by name (a loop is no missing file).
+    if (std::string problem = pathProblem(path); problem != "not found") return quoted + " " + problem;
     return "";
 }
 

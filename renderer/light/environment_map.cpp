@@ -59,9 +59,10 @@ Spectrum EnvironmentMap::lookup(Vec2 uv) const {
 
 EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees, float scale, std::string& warning) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw LoadError("environment map \"" + path + "\" " +
-                        (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found"));
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        std::string problem = pathProblem(path);
+        throw LoadError("environment map \"" + path + "\" " + (problem.empty() ? "is not a regular file" : problem));
+    }
     WholeImageFile file;
     bool tooLarge;
     if (std::string error = openImageWhole(path, uint64_t(textureMemoryBudget()), file, tooLarge); !error.empty())

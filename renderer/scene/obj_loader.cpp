@@ -163,9 +163,10 @@ void ObjParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
                 loadMtl(file, scene, materialIndex, warnings);
             } catch (const LoadError& e) {
                 // A material library that does not exist is recoverable; a malformed one is not.
-                if (std::filesystem::exists(file, ec)) throw;
-                warnings.add(t.location() + "mtllib \"" + name +
-                             "\" not found; faces using its materials get the default material");
+                std::string problem = pathProblem(file);
+                if (problem.empty()) throw;
+                warnings.add(t.location() + "mtllib \"" + name + "\" " + problem +
+                             "; faces using its materials get the default material");
                 mtlMissing = true;
             }
         }

@@ -112,7 +112,8 @@ bool readTexture(const std::string& path, bool colour, Texture& texture, std::st
     tooLarge = false;
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) { // a pipe or device could block forever
-        error = "texture \"" + path + "\" " + (std::filesystem::exists(path, ec) ? "is not a regular file" : "not found");
+        std::string problem = pathProblem(path);
+        error = "texture \"" + path + "\" " + (problem.empty() ? "is not a regular file" : problem);
         return false;
     }
     // A file holds no fewer bytes than its texels take, so the budget bounds it.
