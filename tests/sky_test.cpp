@@ -120,10 +120,18 @@ TEST(PreethamSky, SunBelowTheHorizonIsHidden) {
     EXPECT_TRUE(isBlack(below.sunRadiance()));
     EXPECT_FALSE(isBlack(onHorizon.sunRadiance())); // the upper half of its disk still shows
     EXPECT_NEAR(below.modelSunZenith(), 0.5 * 3.14159265358979, 1e-9);
-    Vec3 d = glm::normalize(Vec3(0.3f, 0.5f, -0.2f));
-    Spectrum a = below.skyRadiance(d), b = onHorizon.skyRadiance(d);
-    // Both keep gamma to their own sun, 5 degrees apart; the luminances are close but not equal.
-    EXPECT_NEAR(luminance(a), luminance(b), 0.2f * luminance(b));
+    // The sky of a sun 5, 30, 60 or 90 degrees below is exactly that of the sun on the horizon at
+    // the same azimuth, gamma included (it once kept gamma to the sun below the horizon, so the sky
+    // at -30 and -60 differed though the README and the warning said otherwise).
+    for (double elevation : {-5.0, -30.0, -60.0, -89.0}) {
+        PreethamSky deep(skyAt(elevation, 30.0, 3.0f));
+        for (Vec3 d : {Vec3(0.3f, 0.5f, -0.2f), Vec3(-0.8f, 0.1f, 0.4f), Vec3(0.0f, 1.0f, 0.0f), Vec3(0.5f, 0.01f, -0.87f)}) {
+            d = glm::normalize(d);
+            Spectrum a = deep.skyRadiance(d), b = onHorizon.skyRadiance(d);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 1e-5f * b[c]) << elevation << " degrees, channel " << c;
+        }
+        EXPECT_NEAR(luminance(deep.groundIrradiance()), luminance(below.groundIrradiance()), 1e-5f * luminance(below.groundIrradiance()));
+    }
     Environment env = skyEnvironment(skyAt(-5.0, 30.0, 3.0f));
     EXPECT_FALSE(env.sun);
     ASSERT_TRUE(env.preetham);

@@ -62,6 +62,14 @@ PreethamSky::PreethamSky(const SkyParameters& p) : parameters_(p) {
     const double t = p.turbidity;
     const double sunY = std::clamp(double(p.sunDirection.y), -1.0, 1.0);
     thetaS_ = std::min(std::acos(sunY), kPiD / 2.0);
+    // Below the horizon the sky is that of the sun on the horizon at the same azimuth (the model
+    // has no twilight): its angle gamma to each direction too, not only its zenith angle. Straight
+    // down there is no azimuth; the sun is then taken at -z (azimuth 0).
+    skySun_ = p.sunDirection;
+    if (sunY < 0.0) {
+        skySun_ = safeNormalize(Vec3(p.sunDirection.x, 0.0f, p.sunDirection.z));
+        if (skySun_ == Vec3(0.0f)) skySun_ = Vec3(0.0f, 0.0f, -1.0f);
+    }
     for (int k = 0; k < 3; ++k)
         for (int i = 0; i < 5; ++i) coefficients_[k][i] = kPerez[k][i][0] * t + kPerez[k][i][1];
     zenith_[0] = std::max(0.0, zenithLuminance(t, thetaS_));
@@ -104,7 +112,7 @@ Vec3 PreethamSky::xyY(double theta, double gamma) const {
 
 Spectrum PreethamSky::skyRadiance(const Vec3& d) const {
     double cosTheta = std::clamp(double(d.y), 0.0, 1.0);
-    const Vec3& s = parameters_.sunDirection;
+    const Vec3& s = skySun_;
     // The angle to the sun from its sine and cosine: exact near the sun, where acos is not.
     double cosGamma = double(d.x) * s.x + double(d.y) * s.y + double(d.z) * s.z;
     Vec3 c = glm::cross(d, s);

@@ -70,6 +70,7 @@ public:
 private:
     SkyParameters parameters_;
     double thetaS_ = 0.0;
+    Vec3 skySun_{0.0f, 1.0f, 0.0f}; // the sun the sky's gamma is measured to: on the horizon when it is below
     double zenith_[3]{}; // Y, x, y at the zenith
     double perezNormal_[3]{};
     double coefficients_[3][5]{}; // A..E for Y, x, y
