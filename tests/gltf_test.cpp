@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -180,6 +182,30 @@ TEST(Gltf, AlphaModesCoverAsSpecified) {
     EXPECT_GT(redness(100, 106), 3.0f); // BLEND: mostly the wall where alpha is below 0.2
     EXPECT_GT(redness(100, 106), 2.0f * redness(136, 142)); // and mostly the quad above 0.8
     EXPECT_GT(redness(136, 142), 1.05f);                    // still a little see-through
+}
+
+// Without a camera the view frames what can be seen: the meshes, not a point light's position
+// (issue 35: a lamp's light 100 units off to the side shrank the plane to a dot, and Blender's
+// framing, which takes the meshes, saw another picture).
+TEST(Gltf, FramingCameraFramesTheMeshesNotThePointLights) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::path(::testing::TempDir()) / "pt_gltf_framing";
+    fs::create_directories(dir);
+    nlohmann::json d = nlohmann::json::parse(std::ifstream(kGltf + "plane_point.gltf"));
+    // The light node moves from (0, 2, 0) to (100, 2, 0); the camera node goes from the scene.
+    ASSERT_EQ(d["nodes"][1]["translation"], nlohmann::json::array({0.0, 2.0, 0.0}));
+    d["nodes"][1]["translation"] = {100.0, 2.0, 0.0};
+    d["scenes"][0]["nodes"] = {0, 1};
+    std::string text = d.dump();
+    std::ofstream(dir / "lamp_aside.gltf") << text;
+    Scene scene = load((dir / "lamp_aside.gltf").string());
+    ASSERT_EQ(scene.cameras.size(), 1u);
+    const Camera& c = scene.cameras[0];
+    EXPECT_EQ(c.name, "auto");
+    // The plane spans [-50, 50] in x and z at y = 0: its box's centre, from +z at its bounding
+    // sphere's distance for a 45 degree view.
+    EXPECT_NEAR(glm::length(c.target - Vec3(0.0f)), 0.0f, 1e-4f);
+    EXPECT_NEAR(c.position.z, 50.0f * std::sqrt(2.0f) / std::sin(glm::radians(22.5f)), 1e-2f);
 }
 
 TEST(Gltf, CamerasKeepTheirAspectAndProjection) {

@@ -30,10 +30,24 @@ void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
     }
 }
 
-// Looks at the bounding box from +z, far enough back that the box fits a 45 degree view.
+// What a camera can see: the triangles and the lab's sphere lights. Point lights (radius 0, glTF's
+// punctual lights) are no part of the picture, and a lamp's bulb or a sun far off to one side
+// would otherwise shrink the model in the frame (Blender frames the meshes alone).
+static void visibleBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
+    triangleBounds(scene, lo, hi);
+    for (const SphereLight& l : scene.lights)
+        if (!l.isPoint()) {
+            lo = glm::min(lo, l.center - Vec3(l.radius));
+            hi = glm::max(hi, l.center + Vec3(l.radius));
+        }
+}
+
+// Looks at the bounding box of what can be seen from +z, far enough back that the box fits a 45
+// degree view; a scene of point lights alone is framed by their positions.
 static Camera frameScene(const Scene& scene) {
     Vec3 lo, hi;
-    sceneBounds(scene, lo, hi);
+    visibleBounds(scene, lo, hi);
+    if (!(lo.x <= hi.x)) sceneBounds(scene, lo, hi);
     Camera c;
     c.name = "auto";
     if (!(lo.x <= hi.x)) return c; // nothing to frame: look down -z from the origin
