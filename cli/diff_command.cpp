@@ -18,7 +18,9 @@ const char* kDiffUsage = R"(usage: pt diff TEST.exr REFERENCE.exr [options]
 Compares two renders of the same scene. With variance layers in both (pt render --aov variance),
 block means at several scales are compared by a z-test whose threshold holds the chance of any
 false failure over the whole image at --alpha: identical physics with different noise passes, a
-change of a few percent in a region fails. Without variance layers, the relative MSE is compared
+change of a few percent in a region fails. Each pixel is weighed by its own sample count: the spp
+layer of an adaptive or --time render (pt render writes it beside the variance layer wherever
+counts differ), else pt:spp. Without variance layers, the relative MSE is compared
 with --threshold instead (not a statistical test; a warning says so).
 
 options (default in brackets):
@@ -38,8 +40,10 @@ difference is (noise included), where the z-test says whether it is more than no
 The heat map and the JSON are written whole or not at all, and never over TEST or REFERENCE.
 
 exit status: 0 the images agree, 1 they differ, 2 bad input (a missing or unreadable file, not a
-regular file, a multipart EXR, sizes or channel lists that differ, NaN or Inf in an image, which is
-reported with its pixel), bad usage, or a report that could not be written
+regular file, a multipart EXR, sizes or channel lists that differ (the spp layer aside), NaN or Inf
+in an image, which is reported with its pixel, a pixel of one sample, whose variance is unknown,
+an image whose pixels hold different counts without an spp layer), bad usage, or a report that
+could not be written
 )";
 
 const char* channelName(int c) { return c == 0 ? "R" : c == 1 ? "G" : "B"; }
