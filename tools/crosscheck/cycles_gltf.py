@@ -248,6 +248,38 @@ def default_materials(doc):
                       file=sys.stderr)
 
 
+def decode_textures():
+    """A diagnostic (--decode-textures): each 8-bit sRGB texture decoded to linear floats before
+    Cycles filters it, as pt does. Cycles keeps such images as bytes and decodes after bilinear
+    filtering, which is darker between unlike texels (the decoding is convex); cycles_lab.py does
+    this always, the glTF check only when asked, to tell that difference from others."""
+    done = {}
+    for mat in bpy.data.materials:
+        for n in mat.node_tree.nodes if mat.node_tree else []:
+            img = n.image if n.type == "TEX_IMAGE" else None
+            if img is None or img.is_float or img.colorspace_settings.name != "sRGB":
+                continue
+            if img.name not in done:
+                w, h = img.size
+                img.colorspace_settings.name = "Non-Color"  # raw encoded values
+                px = np.empty(w * h * img.channels, dtype=np.float32)
+                img.pixels.foreach_get(px)
+                px = px.reshape(-1, img.channels)
+                px = np.concatenate([px, np.ones((px.shape[0], 4 - px.shape[1]), np.float32)], axis=1) \
+                    if px.shape[1] < 4 else px
+                if img.channels < 3:
+                    px[:, 1] = px[:, 2] = px[:, 0]
+                rgb = px[:, :3]
+                px[:, :3] = np.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
+                lin = bpy.data.images.new(img.name + ".linear", w, h, alpha=True, float_buffer=True)
+                lin.colorspace_settings.name = "Linear Rec.709"
+                lin.alpha_mode = img.alpha_mode
+                lin.pixels.foreach_set(px.ravel())
+                done[img.name] = lin
+                print(f"texture {img.name}: decoded to linear before filtering", file=sys.stderr)
+            n.image = done[img.name]
+
+
 def set_world(scene, lights, env):
     """pt's environment: its map with --env (rotation, scale), else white without lights, black with."""
     world = bpy.data.worlds.new("pt-environment")
@@ -284,7 +316,7 @@ def set_world(scene, lights, env):
     scene.world = world
 
 
-def build(path, width, height, camera_spec, max_depth, env):
+def build(path, width, height, camera_spec, max_depth, env, decode=False):
     scene = new_scene(width, height)
     unbiased_cycles(scene, max_depth)
     doc = gltf_json(path)
@@ -316,6 +348,8 @@ def build(path, width, height, camera_spec, max_depth, env):
                 n.distribution = "GGX"
             if n.type == "VOLUME_ABSORPTION":
                 to_extension_absorption(n)
+    if decode:
+        decode_textures()
     lights = [o for o in scene.objects if o.type == "LIGHT"]
     set_world(scene, lights, env)
     bpy.context.view_layer.update()
@@ -359,10 +393,12 @@ def main():
     ap.add_argument("--env", help="an environment map, as pt render --env")
     ap.add_argument("--env-rotate", type=float, default=0.0)
     ap.add_argument("--env-scale", type=float, default=1.0)
+    ap.add_argument("--decode-textures", action="store_true",
+                    help="a diagnostic: decode 8-bit sRGB textures before Cycles filters them, as pt does")
     a = ap.parse_args()
     width, height = (int(x) for x in a.res.lower().split("x"))
     env = (a.env, a.env_rotate, a.env_scale) if a.env else None
-    scene = build(a.file, width, height, a.camera, a.max_depth, env)
+    scene = build(a.file, width, height, a.camera, a.max_depth, env, a.decode_textures)
     render_passes(scene, a.spp, a.passes, a.out_dir)
 
 
