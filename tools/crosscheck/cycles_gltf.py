@@ -25,6 +25,9 @@ what the file does not say, as pt does:
 - A file without cameras: pt's framing, its one camera ("auto", index 0): the bounding box of
   the triangles' vertices (meshes only; pt's punctual lights have no size) seen through its
   bounding sphere from +z (glTF's; Blender's -y) with a vertical field of view of 45 degrees.
+- The default scene alone, as pt renders it: other scenes and nodes in no scene are left out.
+- A primitive without a material gets the specification's default (white, metallic 1, roughness
+  1), as in pt; the importer leaves it none (Cycles' grey diffuse) or Blender's default.
 - The Principled BSDF's multiple-scattering GGX is switched to single-scattering GGX, as in the
   glTF BRDF; the rest of the Principled BSDF is not the glTF BRDF (its dielectric Fresnel and
   layering differ), which is what the check measures first on simple cases.
@@ -32,10 +35,12 @@ what the file does not say, as pt does:
   its colour and 1 / attenuationDistance d as its density, which absorbs (1 - c) / d; the
   extension's coefficient is -ln(c) / d (c is what is left after d). Reset here to the
   extension's: density max(-ln c) / d, colour 1 - (-ln c) / (d density), per channel.
-Cycles' biasing defaults are off, as in cycles_lab.py; each pass goes to its own EXR.
+Cycles' biasing defaults are off, as in cycles_lab.py; each pass goes to its own EXR. Cycles
+filters 8-bit sRGB textures before decoding them, pt after; --decode-textures (a diagnostic)
+decodes them first, to tell that difference from others.
 
     cycles_gltf.py FILE --out-dir DIR [--res WxH] [--spp N] [--passes P] [--camera NAME|INDEX]
-                   [--env MAP [--env-rotate DEG] [--env-scale S]]
+                   [--env MAP [--env-rotate DEG] [--env-scale S]] [--decode-textures]
 """
 import argparse
 import json
