@@ -33,6 +33,14 @@ check() {
   rm -rf out
 }
 
+# damaged_jpegs: whole.jpg, cut.jpg (its first 1300 bytes) and garbled.jpg (200 bytes of its
+# entropy-coded data overwritten), in the scratch folder.
+damaged_jpegs() {
+  oiiotool --pattern checker:width=16:height=16 256x256 3 -d uint8 -o whole.jpg >/dev/null 2>&1
+  head -c 1300 whole.jpg > cut.jpg
+  /usr/bin/python3 -c "b = bytearray(open('whole.jpg', 'rb').read()); b[1300:1500] = b'Z' * 200; open('garbled.jpg', 'wb').write(b)"
+}
+
 # Ends the suite: its status is the number of failed checks (0: all passed).
 finish() {
   if [[ $failures -gt 0 ]]; then

@@ -85,9 +85,7 @@ maps_case() { # NAME STATUS TEXT MAP-LINE
 maps_case corrupt_normal_map 0 'maps_corrupt_normal_map.mtl:3: norm: cannot read texture "corrupt.png"' 'norm corrupt.png'
 # A JPEG cut short or damaged in its data is unreadable as a PNG cut short is (OpenImageIO's reader
 # says so only beside a read that succeeds, and the missing part came out flat grey).
-oiiotool --pattern checker:width=16:height=16 256x256 3 -d uint8 -o whole.jpg >/dev/null 2>&1
-head -c 1300 whole.jpg > cut.jpg
-/usr/bin/python3 -c "b = bytearray(open('whole.jpg', 'rb').read()); b[1300:1500] = b'Z' * 200; open('garbled.jpg', 'wb').write(b)"
+damaged_jpegs
 maps_case jpeg_cut_short 0 'maps_jpeg_cut_short.mtl:3: map_Kd: cannot read texture "cut.jpg": the file is damaged or cut short (JPEG error: Premature end of JPEG file' 'map_Kd cut.jpg'
 maps_case jpeg_garbled 0 'maps_jpeg_garbled.mtl:3: map_Kd: cannot read texture "garbled.jpg": the file is damaged or cut short (JPEG error: Corrupt JPEG data' 'map_Kd garbled.jpg'
 maps_case grey_normal_map 0 'maps_grey_normal_map.mtl:3: norm: normal map "grey.png" has 1 channel(s); expected RGB' 'norm grey.png'
