@@ -175,13 +175,12 @@ int mergeCommand(int argc, char** argv) {
     }
 
     // Gaps: pixels short of the job's samples, and which sample ranges no part covers.
+    const Film::SampleCounts counts = film->sampleCounts();
     size_t empty = 0, short_ = 0;
-    uint32_t fewest = spp;
     for (size_t i = 0; i < size_t(width) * height; ++i) {
         uint32_t n = film->count(i);
         empty += n == 0;
         short_ += n < spp;
-        fewest = std::min(fewest, n);
     }
     if (short_ > 0 && !quiet && budgeted && empty > 0)
         std::fprintf(err, "pt merge: warning: %zu pixels hold no sample at all (no part covers them): they are black\n", empty);
@@ -192,7 +191,7 @@ int mergeCommand(int argc, char** argv) {
                 ranges.emplace_back(m.info.first, m.info.last);
         std::string missing = missingRanges(ranges, spp);
         std::fprintf(err, "pt merge: warning: %zu of %d pixels hold fewer than the job's %u samples (the fewest %u)%s%s\n",
-                     short_, width * height, spp, fewest,
+                     short_, width * height, spp, counts.fewest,
                      missing.empty() ? "" : "; no whole-image part holds samples ", missing.c_str());
         if (empty > 0)
             std::fprintf(err, "pt merge: warning: %zu pixels hold no sample at all (no part covers them): they are black\n", empty);
@@ -213,7 +212,6 @@ int mergeCommand(int argc, char** argv) {
             image.metadata.push_back(a);
     }
     // As pt render writes them: the fewest as pt:spp, and where pixels differ the most and the mean.
-    const Film::SampleCounts counts = film->sampleCounts();
     image.metadata.push_back(ImageAttribute::integerValue("pt:spp", counts.fewest));
     if (counts.most != counts.fewest) {
         image.metadata.push_back(ImageAttribute::integerValue("pt:sppMax", counts.most));

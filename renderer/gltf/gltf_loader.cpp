@@ -438,8 +438,7 @@ private:
     TextureMap normalMapOf(TextureMap map, const std::string& what) {
         if (!map.used()) return map;
         const Texture& t = (*scene_.textures)[map.texture];
-        int colourChannels = t.hasAlpha() ? t.channels - 1 : t.channels;
-        if (colourChannels >= 3) return map;
+        if (t.channels >= 3) return map; // RGB, or RGB and alpha
         warnings_.add(what + ": image \"" + t.path + "\" has " + std::to_string(t.channels) + " channel" +
                       (t.channels == 1 ? "" : "s") + (t.hasAlpha() ? " (grey and alpha)" : " (grey)") +
                       "; a normal map needs RGB, so it is ignored and the surface keeps its interpolated normals");

@@ -32,8 +32,11 @@ Image filmImage(const Film& film, const AovSelection& aovs, double exposure, siz
     if (aovs.depth) image.layers.push_back({"depth", {"Z"}, film.depth()});
     // A variance of the mean is only half of what pt diff needs where pixels hold different
     // counts (--noise, --time with --resume, merged parts): each pixel's count goes with it.
-    const Film::SampleCounts counts = film.sampleCounts();
-    if (aovs.spp || (aovs.variance && counts.fewest != counts.most)) image.layers.push_back({"spp", {"Z"}, film.samples()});
+    auto countsDiffer = [&] {
+        const Film::SampleCounts counts = film.sampleCounts();
+        return counts.fewest != counts.most;
+    };
+    if (aovs.spp || (aovs.variance && countsDiffer())) image.layers.push_back({"spp", {"Z"}, film.samples()});
     return image;
 }
 

@@ -22,31 +22,27 @@ static void triangleBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
         }
 }
 
-void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
-    triangleBounds(scene, lo, hi);
-    for (const SphereLight& l : scene.lights) {
-        lo = glm::min(lo, l.center - Vec3(l.radius));
-        hi = glm::max(hi, l.center + Vec3(l.radius));
-    }
-}
-
-// What a camera can see: the triangles and the lab's sphere lights. Point lights (radius 0, glTF's
-// punctual lights) are no part of the picture, and a lamp's bulb or a sun far off to one side
-// would otherwise shrink the model in the frame (Blender frames the meshes alone).
-static void visibleBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
+// The triangles' bounds grown by the lights' spheres; point lights (radius 0) only with
+// `pointLights`.
+static void boundsWithLights(const Scene& scene, bool pointLights, Vec3& lo, Vec3& hi) {
     triangleBounds(scene, lo, hi);
     for (const SphereLight& l : scene.lights)
-        if (!l.isPoint()) {
+        if (pointLights || !l.isPoint()) {
             lo = glm::min(lo, l.center - Vec3(l.radius));
             hi = glm::max(hi, l.center + Vec3(l.radius));
         }
 }
 
+void sceneBounds(const Scene& scene, Vec3& lo, Vec3& hi) { boundsWithLights(scene, true, lo, hi); }
+
 // Looks at the bounding box of what can be seen from +z, far enough back that the box fits a 45
-// degree view; a scene of point lights alone is framed by their positions.
+// degree view: the triangles and the lab's sphere lights. Point lights (radius 0, glTF's punctual
+// lights) are no part of the picture, and a lamp's bulb or a light far off to one side would
+// otherwise shrink the model in the frame (Blender frames the meshes alone). A scene of point
+// lights alone is framed by their positions.
 static Camera frameScene(const Scene& scene) {
     Vec3 lo, hi;
-    visibleBounds(scene, lo, hi);
+    boundsWithLights(scene, false, lo, hi);
     if (!(lo.x <= hi.x)) sceneBounds(scene, lo, hi);
     Camera c;
     c.name = "auto";
