@@ -54,7 +54,7 @@ import mathutils
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(__file__))
-from cycles_lab import look_at, new_scene, render_passes, unbiased_cycles  # noqa: E402
+from cycles_lab import decoded_copy, look_at, new_scene, render_passes, unbiased_cycles  # noqa: E402
 from lab_scene import fail  # noqa: E402
 
 # Blender's axes from glTF's, as the importer turns them: Blender (x, y, z) = glTF (x, -z, y).
@@ -265,22 +265,7 @@ def decode_textures():
             if img is None or img.is_float or img.colorspace_settings.name != "sRGB":
                 continue
             if img.name not in done:
-                w, h = img.size
-                img.colorspace_settings.name = "Non-Color"  # raw encoded values
-                px = np.empty(w * h * img.channels, dtype=np.float32)
-                img.pixels.foreach_get(px)
-                px = px.reshape(-1, img.channels)
-                px = np.concatenate([px, np.ones((px.shape[0], 4 - px.shape[1]), np.float32)], axis=1) \
-                    if px.shape[1] < 4 else px
-                if img.channels < 3:
-                    px[:, 1] = px[:, 2] = px[:, 0]
-                rgb = px[:, :3]
-                px[:, :3] = np.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
-                lin = bpy.data.images.new(img.name + ".linear", w, h, alpha=True, float_buffer=True)
-                lin.colorspace_settings.name = "Linear Rec.709"
-                lin.alpha_mode = img.alpha_mode
-                lin.pixels.foreach_set(px.ravel())
-                done[img.name] = lin
+                done[img.name] = decoded_copy(img, img.name + ".linear", keep_alpha=True)
                 print(f"texture {img.name}: decoded to linear before filtering", file=sys.stderr)
             n.image = done[img.name]
 

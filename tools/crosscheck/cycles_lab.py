@@ -76,24 +76,38 @@ def mix_shader(tree, fac, a, b):
     return mix.outputs[0]
 
 
-def linear_texture(path):
-    """An 8-bit sRGB texture decoded to linear floats, which Cycles then interpolates.
+def decoded_copy(src, name, keep_alpha=False):
+    """A float copy of the 8-bit sRGB image `src`, decoded to linear, which Cycles then
+    interpolates.
 
     Cycles keeps 8-bit sRGB images as bytes and decodes after bilinear interpolation, which is
     darker between unlike texels (the decoding is convex): on the lab's grid texture, 1 % on the
-    floor. pt and Mitsuba decode each texel first; this makes Cycles do the same.
+    floor. pt and Mitsuba decode each texel first; this makes Cycles do the same. A grey image's
+    value serves as RGB; `keep_alpha` keeps the image's alpha and its alpha mode (glTF's coverage).
     """
-    src = bpy.data.images.load(path)
     src.colorspace_settings.name = "Non-Color"  # raw encoded values
     w, h = src.size
-    px = np.empty(w * h * 4, dtype=np.float32)
+    n = src.channels
+    px = np.empty(w * h * n, dtype=np.float32)
     src.pixels.foreach_get(px)
-    rgb = px.reshape(-1, 4)[:, :3]
-    px.reshape(-1, 4)[:, :3] = np.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
-    img = bpy.data.images.new(os.path.basename(path) + ".linear", w, h, float_buffer=True)
+    px = px.reshape(-1, n)
+    if n < 4:
+        px = np.concatenate([px, np.ones((px.shape[0], 4 - n), np.float32)], axis=1)
+    if n < 3:
+        px[:, 1] = px[:, 2] = px[:, 0]
+    rgb = px[:, :3]
+    px[:, :3] = np.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
+    img = bpy.data.images.new(name, w, h, alpha=keep_alpha, float_buffer=True)
     img.colorspace_settings.name = "Linear Rec.709"
-    img.pixels.foreach_set(px)
+    if keep_alpha:
+        img.alpha_mode = src.alpha_mode
+    img.pixels.foreach_set(px.ravel())
     return img
+
+
+def linear_texture(path):
+    """The 8-bit sRGB texture at `path` decoded to linear floats (decoded_copy)."""
+    return decoded_copy(bpy.data.images.load(path), os.path.basename(path) + ".linear")
 
 
 def lab_material(name, m):
