@@ -19,8 +19,6 @@ exact() { # NAME A B
   else bad "$1: $(cat "$1.log")"; fi
 }
 run() { "$@" >/dev/null || bad "$*"; }
-# meta FILE NAME: a metadata value of an EXR.
-meta() { /usr/bin/python3 -c "import OpenImageIO as o,sys; s=o.ImageInput.open(sys.argv[1]).spec(); print(s.getattribute(sys.argv[2]))" "$1" "$2"; }
 # sppstats FILE: fewest, most and mean of the spp layer.
 sppstats() {
   /usr/bin/python3 -c "

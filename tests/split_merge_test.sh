@@ -73,7 +73,6 @@ fi
 first=(-spp 2 --res 1536x1536 --aov variance -q)
 stop_part_way "$pt" early.exr "$root/scenes/cornell_box.obj" "${first[@]}" --threads 1
 status=$?
-meta() { /usr/bin/python3 -c "import OpenImageIO as o,sys; s=o.ImageInput.open(sys.argv[1]).spec(); print(s.getattribute(sys.argv[2]))" "$1" "$2"; }
 if [[ $status -eq 143 && -f early.partial.exr && $(meta early.partial.exr pt:spp) == 0 && $(meta early.partial.exr pt:sppMax) == 1 ]]; then
   echo "ok   first pass interrupted: partial holds $(meta early.partial.exr pt:sppMean) samples a pixel on average"
   run "$pt" render "$root/scenes/cornell_box.obj" "${first[@]}" --resume early.partial.exr -o early.exr

@@ -3,6 +3,9 @@
 # SIGTERM 1 s later. A signal before rendering begins (pt still starting or loading, on a busy
 # machine) stops it with nothing written: then it tries again, signalling after 2 and 4 s.
 # Returns pt's exit status (143 when stopped); the finished samples are in OUT's .partial.exr.
+# meta FILE NAME: a metadata value of an EXR (of a partial, say).
+meta() { /usr/bin/python3 -c "import OpenImageIO as o,sys; s=o.ImageInput.open(sys.argv[1]).spec(); print(s.getattribute(sys.argv[2]))" "$1" "$2"; }
+
 stop_part_way() {
   local pt=$1 out=$2 delay pid status
   shift 2
