@@ -1,0 +1,219 @@
+#include "denoise/denoiser.h"
+
+#include "denoise/oidn_api.h"
+
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+#ifndef PT_OIDN_DEFAULT_DIR
+#define PT_OIDN_DEFAULT_DIR ""
+#endif
+
+namespace pt {
+
+const char* qualityName(DenoiseQuality q) {
+    return q == DenoiseQuality::High ? "high" : q == DenoiseQuality::Balanced ? "balanced" : "fast";
+}
+
+// The functions pt calls, looked up by name in the loaded library.
+struct Denoiser::Api {
+    oidn::NewDeviceFn newDevice;
+    oidn::ReleaseDeviceFn releaseDevice;
+    oidn::SetDeviceIntFn setDeviceInt;
+    oidn::SetDeviceBoolFn setDeviceBool;
+    oidn::GetDeviceIntFn getDeviceInt;
+    oidn::CommitDeviceFn commitDevice;
+    oidn::GetDeviceErrorFn getDeviceError;
+    oidn::NewFilterFn newFilter;
+    oidn::ReleaseFilterFn releaseFilter;
+    oidn::SetSharedFilterImageFn setSharedFilterImage;
+    oidn::SetFilterBoolFn setFilterBool;
+    oidn::SetFilterIntFn setFilterInt;
+    oidn::CommitFilterFn commitFilter;
+    oidn::ExecuteFilterFn executeFilter;
+};
+
+namespace {
+
+constexpr const char* kSoname = "libOpenImageDenoise.so.2";
+constexpr const char* kInstall = "install it with tools/install-oidn (tools/install-deps runs it), or name the library "
+                                 "file with PT_OIDN_LIBRARY=/path/to/libOpenImageDenoise.so.2";
+
+// The library stays loaded for the life of the process: its thread pool may outlive a device.
+void* loadLibrary(std::string& path, std::string& missing) {
+    auto load = [&](const std::string& file) -> void* {
+        void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!handle) {
+            const char* why = dlerror();
+            throw DenoiseError(file + " cannot be loaded as Intel Open Image Denoise: " + (why ? why : "unknown error"));
+        }
+        path = file;
+        return handle;
+    };
+    std::error_code ec;
+    if (const char* named = std::getenv("PT_OIDN_LIBRARY"); named && *named) {
+        if (!std::filesystem::exists(named, ec)) {
+            missing = std::string("PT_OIDN_LIBRARY names ") + named + ", which does not exist; " + kInstall;
+            return nullptr;
+        }
+        return load(named);
+    }
+    const std::string bundled = std::string(PT_OIDN_DEFAULT_DIR) + "/" + kSoname;
+    if (*PT_OIDN_DEFAULT_DIR && std::filesystem::exists(bundled, ec)) return load(bundled);
+    if (void* handle = dlopen(kSoname, RTLD_NOW | RTLD_LOCAL)) {
+        path = kSoname;
+        return handle;
+    }
+    missing = std::string("--denoise needs Intel Open Image Denoise 2.x, which was not found (looked for ") +
+              (*PT_OIDN_DEFAULT_DIR ? bundled + " and " : std::string()) + kSoname +
+              " on the library path; PT_OIDN_LIBRARY is not set); " + kInstall;
+    return nullptr;
+}
+
+template <typename Fn>
+void bind(void* handle, const std::string& path, const char* name, Fn& fn) {
+    fn = reinterpret_cast<Fn>(dlsym(handle, name));
+    if (!fn)
+        throw DenoiseError(path + " is not Intel Open Image Denoise 2.x: it has no function " + name +
+                           " (pt needs OIDN 2.x; tools/install-oidn installs 2.5.1)");
+}
+
+// Any pixel value the filter must not see (NaN, Inf, negative colour) becomes 0; a feature is
+// brought into the range OIDN expects. Returns how many colour values were replaced.
+size_t sanitize(DenoiseImages& images) {
+    size_t replaced = 0;
+    for (float& v : *images.color)
+        if (!(v >= 0.0f && v <= 3.0e38f)) v = 0.0f, ++replaced;
+    for (float& v : images.albedo) v = v >= 0.0f ? std::min(v, 1.0f) : 0.0f; // NaN too
+    for (float& v : images.normal) v = v >= -1.0f ? std::min(v, 1.0f) : 0.0f;
+    return replaced;
+}
+
+} // namespace
+
+std::unique_ptr<Denoiser> Denoiser::open(int threads, std::string& missing) {
+    std::string path;
+    void* handle = loadLibrary(path, missing);
+    if (!handle) return nullptr;
+    std::unique_ptr<Denoiser> d(new Denoiser);
+    d->api_ = std::make_unique<Api>();
+    Api& a = *d->api_;
+    d->path_ = path;
+    bind(handle, path, "oidnNewDevice", a.newDevice);
+    bind(handle, path, "oidnReleaseDevice", a.releaseDevice);
+    bind(handle, path, "oidnSetDeviceInt", a.setDeviceInt);
+    bind(handle, path, "oidnSetDeviceBool", a.setDeviceBool);
+    bind(handle, path, "oidnGetDeviceInt", a.getDeviceInt);
+    bind(handle, path, "oidnCommitDevice", a.commitDevice);
+    bind(handle, path, "oidnGetDeviceError", a.getDeviceError);
+    bind(handle, path, "oidnNewFilter", a.newFilter);
+    bind(handle, path, "oidnReleaseFilter", a.releaseFilter);
+    bind(handle, path, "oidnSetSharedFilterImage", a.setSharedFilterImage);
+    bind(handle, path, "oidnSetFilterBool", a.setFilterBool);
+    bind(handle, path, "oidnSetFilterInt", a.setFilterInt);
+    bind(handle, path, "oidnCommitFilter", a.commitFilter);
+    bind(handle, path, "oidnExecuteFilter", a.executeFilter);
+
+    oidn::Device device = a.newDevice(oidn::kDeviceCpu);
+    if (!device) {
+        const char* message = nullptr;
+        a.getDeviceError(nullptr, &message);
+        throw DenoiseError("Intel Open Image Denoise (" + path + ") could not open its CPU device: " +
+                           (message ? message : "no reason given"));
+    }
+    d->device_ = device;
+    // The render's thread count, and no pinning: pt shares the process (and the machine) with it.
+    if (threads > 0) a.setDeviceInt(device, "numThreads", threads);
+    a.setDeviceBool(device, "setAffinity", false);
+    a.commitDevice(device);
+    const char* message = nullptr;
+    if (a.getDeviceError(device, &message) != oidn::kErrorNone)
+        throw DenoiseError("Intel Open Image Denoise (" + path + "): " + (message ? message : "device error"));
+    int version = a.getDeviceInt(device, "version"); // 20501 for 2.5.1
+    if (version < 20000 || version >= 30000)
+        throw DenoiseError(path + " is Intel Open Image Denoise version " + std::to_string(version / 10000) + "." +
+                           std::to_string(version / 100 % 100) + "." + std::to_string(version % 100) +
+                           "; pt needs 2.x (tools/install-oidn installs 2.5.1)");
+    d->version_ = std::to_string(version / 10000) + "." + std::to_string(version / 100 % 100) + "." +
+                  std::to_string(version % 100);
+    return d;
+}
+
+Denoiser::~Denoiser() {
+    if (device_) api_->releaseDevice(oidn::Device(device_));
+}
+
+DenoiseReport Denoiser::denoise(DenoiseImages& images, const DenoiseOptions& options) const {
+    const Api& a = *api_;
+    oidn::Device device = oidn::Device(device_);
+    const size_t w = size_t(images.width), h = size_t(images.height), n = w * h * 3;
+    if (images.color->size() != n || images.albedo.size() != n || images.normal.size() != n)
+        throw DenoiseError("denoise: the colour, albedo and normal images differ in size");
+    auto start = std::chrono::steady_clock::now();
+    DenoiseReport report;
+    report.replaced = sanitize(images);
+    const DenoiseQuality quality = options.quality;
+    const int q = quality == DenoiseQuality::High       ? oidn::kQualityHigh
+                  : quality == DenoiseQuality::Balanced ? oidn::kQualityBalanced
+                                                        : oidn::kQualityFast;
+    auto check = [&](const char* stage) {
+        const char* message = nullptr;
+        oidn::Error e = a.getDeviceError(device, &message);
+        if (e == oidn::kErrorNone) return;
+        std::string what = e == oidn::kErrorOutOfMemory ? "out of memory" : "error";
+        throw DenoiseError("Intel Open Image Denoise " + version_ + ", " + stage + ": " + what + ": " +
+                           (message ? message : "no message"));
+    };
+    // Released on every path out, an exception's included.
+    struct FilterHandle {
+        const Api& a;
+        oidn::Filter f;
+        ~FilterHandle() {
+            if (f) a.releaseFilter(f);
+        }
+    };
+    // One RT filter per image: the feature filters take the feature as their only input.
+    std::vector<float> out(n);
+    auto run = [&](const char* stage, std::vector<float>* feature, bool beauty) {
+        FilterHandle filter{a, a.newFilter(device, "RT")};
+        check(stage);
+        auto image = [&](const char* name, std::vector<float>& v) {
+            a.setSharedFilterImage(filter.f, name, v.data(), oidn::kFormatFloat3, w, h, 0, 0, 0);
+        };
+        if (beauty) {
+            image("color", *images.color);
+            image("albedo", images.albedo);
+            image("normal", images.normal);
+            a.setFilterBool(filter.f, "hdr", true);
+            a.setFilterBool(filter.f, "cleanAux", options.prefilter);
+        } else {
+            image(feature == &images.albedo ? "albedo" : "normal", *feature);
+        }
+        image("output", out);
+        a.setFilterInt(filter.f, "quality", q);
+        a.commitFilter(filter.f);
+        check(stage);
+        a.executeFilter(filter.f);
+        check(stage);
+    };
+    if (options.prefilter) {
+        run("prefiltering the albedo", &images.albedo, false);
+        images.albedo.swap(out);
+        for (float& v : images.albedo) v = std::clamp(v, 0.0f, 1.0f); // the filter may overshoot at edges
+        run("prefiltering the normal", &images.normal, false);
+        images.normal.swap(out);
+    }
+    run("denoising the image", nullptr, true);
+    images.color->swap(out);
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report.description = "OIDN " + version_ + " RT, quality " + qualityName(quality) + ", albedo and normal " +
+                         (options.prefilter ? "prefiltered" : "as rendered");
+    return report;
+}
+
+} // namespace pt
