@@ -9,11 +9,16 @@
 
 namespace pt {
 
-// What the camera ray hit first, for the albedo, normal and depth layers.
+// The albedo, normal and depth layers: the features the denoiser is guided by. Depth is the
+// camera ray's hit. Albedo and normal are those of the first surface that is not perfectly
+// specular: through mirrors and smooth glass the path is followed (as OIDN's documentation and
+// Cycles do), so that what is seen in them or behind them keeps its edges and texture.
 struct FirstHit {
-    Spectrum albedo{0.0f}; // the BSDF's total reflectance towards the camera (all lobes)
-    Vec3 normal{0.0f};     // shading normal, turned to face the camera
+    Spectrum albedo{0.0f}; // the BSDF's total reflectance towards the ray (all lobes), times tint
+    Vec3 normal{0.0f};     // shading normal, turned to face the ray
     float depth = kInf;    // distance along the camera ray
+    Spectrum tint{1.0f};   // what the perfectly specular surfaces passed so far let through
+    bool open = true;      // only perfectly specular surfaces so far: albedo and normal may change
 };
 
 template <typename Sampler>

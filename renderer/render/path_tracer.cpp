@@ -37,16 +37,20 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
     if (path.medium != kAir) // Beer-Lambert along the ray just traced
         path.beta *= transmittance(scene_.materials[path.medium].attenuation, hit.found() ? hit.t : kInf);
     if (!hit.found()) {
+        // Seen through a mirror or glass, the sky is what a camera ray that misses sees: no surface.
+        if (firstHits && path.first.open) path.first.albedo = Spectrum(0.0f), path.first.normal = Vec3(0.0f);
         const Environment& env = scene_.environment;
         path.L += path.beta * env.radiance(ray.dir) * hitWeight(path, lights_.environmentEmitter(), kInf);
         if (env.sun && env.sun->covers(ray.dir)) path.L += path.beta * env.sun->radiance * hitWeight(path, lights_.sunEmitter(), kInf);
         return false;
     }
     if (hit.onSphere) { // sphere lights emit and reflect nothing
-        if (depth == 0 && firstHits) {
+        if (firstHits && path.first.open) {
             const SphereLight& l = scene_.lights[hit.prim];
-            path.first.depth = hit.t;
+            if (depth == 0) path.first.depth = hit.t;
+            path.first.albedo = Spectrum(0.0f);
             path.first.normal = glm::normalize(ray.origin + hit.t * ray.dir - l.center);
+            path.first.open = false;
         }
         uint32_t e = lights_.emitterOfLight(hit.prim);
         path.L += path.beta * lights_.emitter(e).radiance * hitWeight(path, e, hit.t);
@@ -61,10 +65,11 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
     if (m.unlit) [[unlikely]] { // only camera rays reach it (accel.cpp): its base colour, as seen
         const Spectrum color = m.kd * fetchSurfaceInputs(m, *scene_.textures, sp, -ray.dir).kd;
         path.L += path.beta * color;
-        if (depth == 0 && firstHits) {
-            path.first.albedo = color;
+        if (firstHits && path.first.open) {
+            if (depth == 0) path.first.depth = hit.t;
+            path.first.albedo = path.first.tint * color;
             path.first.normal = glm::dot(ray.dir, sp.ns) < 0.0f ? sp.ns : -sp.ns;
-            path.first.depth = hit.t;
+            path.first.open = false;
         }
         return false;
     }
@@ -79,10 +84,11 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
     // The geometric normal on the frame's side, for the tests that wi leaves from the side the
     // frame says (a frame turned to a back face turns it too, or the back would stay black).
     const Vec3 ng = shading.turned ? -sp.ng : sp.ng;
-    if (depth == 0 && firstHits) {
-        path.first.albedo = bsdf.albedo();
+    if (firstHits && path.first.open) { // final unless the surface is a mirror or smooth glass
+        if (depth == 0) path.first.depth = hit.t;
+        path.first.albedo = path.first.tint * bsdf.albedo();
         path.first.normal = woLocal.z >= 0.0f ? frame.n : -frame.n;
-        path.first.depth = hit.t;
+        path.first.open = !bsdf.hasNonDelta() && !bsdf.isBlack();
     }
     if (bsdf.isBlack()) return false;
 
@@ -140,6 +146,9 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
         path.medium = mediumAfterCrossing(path.medium, sp.material, m, wi, sp.ng);
     path.beta *= bs.weight;
     path.etaScale *= bs.radianceScale;
+    // Through a mirror or smooth glass: what it passes tints the features of what lies beyond
+    // (without refraction's radiance scaling, which is no colour).
+    if (firstHits && path.first.open) path.first.tint *= bs.weight / bs.radianceScale;
     path.deltaBefore = bs.delta;
     path.prevPdf = bs.pdf;
     path.prevP = sp.p;
