@@ -7,5 +7,6 @@ namespace pt::cli {
 int renderCommand(int argc, char** argv); // argv[0] is "render"
 int diffCommand(int argc, char** argv);   // argv[0] is "diff"
 int mergeCommand(int argc, char** argv);  // argv[0] is "merge"
+int denoiseCommand(int argc, char** argv); // argv[0] is "denoise"
 
 } // namespace pt::cli

@@ -2,6 +2,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/console.h"
+#include "cli/denoising.h"
 #include "io/output_file.h"
 #include "image/compare.h"
 #include "image/flip.h"
@@ -44,6 +45,10 @@ regular file, a multipart EXR, sizes or channel lists that differ (the spp layer
 in an image, which is reported with its pixel, a pixel of one sample, whose variance is unknown,
 an image whose pixels hold different counts without an spp layer), bad usage, or a report that
 could not be written
+
+A denoised image (pt render --denoise, pt denoise) is compared by its raw estimate, the noisy
+layer kept beside it: denoised pixels share their neighbours' samples, which no per-pixel test
+can judge. A note says so.
 )";
 
 const char* channelName(int c) { return c == 0 ? "R" : c == 1 ? "G" : "B"; }
@@ -141,6 +146,15 @@ int diffCommand(int argc, char** argv) {
         if (error.empty() && image->parts > 1)
             error = "\"" + *path + "\" has " + std::to_string(image->parts) +
                     " parts; pt diff compares single-part images such as pt render writes";
+        // A denoised image is no estimate a statistical test can judge (its pixels share their
+        // neighbours' samples): its raw estimate, kept beside it, is compared instead.
+        std::string why;
+        if (error.empty() && restoreRawEstimate(*image, why)) {
+            if (!why.empty()) error = *path + ": " + why;
+            else if (!quiet)
+                std::fprintf(err, "pt diff: note: %s is denoised; comparing its raw estimate (layer noisy), not the "
+                                  "denoised picture\n", path->c_str());
+        }
         if (!error.empty()) {
             std::fprintf(err, "pt diff: %s\n", error.c_str());
             return 2;

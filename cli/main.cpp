@@ -19,6 +19,8 @@ commands:
                            (pt diff --help lists its options)
   merge PART... -o OUT     merge the parts of a split render (pt render --samples, --crop)
                            into one image (pt merge --help lists its options)
+  denoise IN.exr -o OUT    denoise a render that has its albedo and normal layers, with
+                           Intel Open Image Denoise (pt denoise --help lists its options)
 
 options:
   -h, --help               show this help
@@ -45,6 +47,7 @@ int main(int argc, char** argv) {
         if (!std::strcmp(cmd, "render")) return pt::cli::renderCommand(argc - 1, argv + 1);
         if (!std::strcmp(cmd, "diff")) return pt::cli::diffCommand(argc - 1, argv + 1);
         if (!std::strcmp(cmd, "merge")) return pt::cli::mergeCommand(argc - 1, argv + 1);
+        if (!std::strcmp(cmd, "denoise")) return pt::cli::denoiseCommand(argc - 1, argv + 1);
     } catch (const std::bad_alloc&) { // each stage names what it allocates; this is the last resort
         std::fprintf(pt::cli::errorStream(), "pt: error: out of memory\n");
         return 1;

@@ -3,12 +3,15 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/console.h"
+#include "cli/denoising.h"
 #include "cli/stop_signals.h"
 #include "io/output_file.h"
 #include "image/image_io.h"
 #include "render/film_image.h"
 #include "render/film_part.h"
 #include "render/render_job.h"
+
+#include <tbb/info.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -35,6 +38,10 @@ options (default in brackets):
   --aov LIST           extra EXR layers from the parts' sums: variance, albedo, normal, depth,
                        spp (each pixel's sample count)
                        (albedo, normal and depth need parts rendered with them) [none]
+  --denoise            denoise the merged image with Intel Open Image Denoise, as pt render
+                       --denoise does (the RGB denoised, the raw estimate as layer noisy);
+                       the parts must hold first-hit sums: render them with --aov albedo,normal.
+                       The only correct place to denoise a split render [off]
   -q, --quiet          print no warnings, only errors and the summary line
   -h, --help           show this help
 
@@ -66,6 +73,7 @@ int mergeCommand(int argc, char** argv) {
     std::vector<std::string> paths;
     std::string outputPath = "merged.exr";
     AovSelection aovs;
+    bool denoise = false;
     bool quiet = false;
     OutputFile output;
     try {
@@ -83,6 +91,8 @@ int mergeCommand(int argc, char** argv) {
                 outputPath = args.value(opt);
             } else if (opt == "aov") {
                 aovs = parseAovList(args.value(opt));
+            } else if (opt == "denoise") {
+                denoise = true;
             } else if (opt == "q" || opt == "quiet") {
                 quiet = true;
             } else {
@@ -107,6 +117,12 @@ int mergeCommand(int argc, char** argv) {
     // Reading and writing are quick to do again: a signal quits at once, and removes the
     // temporary output file if it is being written.
     installStopHandlers("pt merge: interrupted; nothing was written\n");
+    std::unique_ptr<Denoiser> denoiser;
+    if (denoise) {
+        int status = 0;
+        denoiser = openDenoiser("pt merge", tbb::info::default_concurrency(), err, status);
+        if (!denoiser) return status;
+    }
 
     // One part at a time: read, checked against the first (the job) and against those before it
     // (no sample of a pixel twice), added to the merged film and let go, so that a merge holds one
@@ -166,11 +182,12 @@ int mergeCommand(int argc, char** argv) {
     const int width = merged[0].info.fullWidth, height = merged[0].info.fullHeight;
     const uint32_t spp = merged[0].info.spp;
     bool layers = std::all_of(merged.begin(), merged.end(), [](const Merged& m) { return m.layers; });
-    if (aovs.firstHit() && !layers) {
+    if ((aovs.firstHit() || denoise) && !layers) {
         for (const Merged& m : merged)
             if (!m.layers)
-                std::fprintf(err, "pt merge: error: %s has no first-hit sums; --aov albedo, normal and depth need every part "
-                                  "rendered with one of them\n", m.path.c_str());
+                std::fprintf(err, "pt merge: error: %s has no first-hit sums; %s need every part rendered with --aov "
+                                  "albedo,normal (or any of albedo, normal, depth)\n",
+                             m.path.c_str(), denoise ? "--denoise (its albedo and normal guides)" : "--aov albedo, normal and depth");
         return 1;
     }
 
@@ -220,6 +237,14 @@ int mergeCommand(int argc, char** argv) {
     if (adaptive) image.metadata.push_back(ImageAttribute::integerValue("pt:converged", (long long)converged));
     image.metadata.push_back(ImageAttribute::integerValue("pt:mergedParts", (long long)merged.size()));
     image.metadata.push_back(ImageAttribute::floatValue("pt:renderSeconds", seconds));
+    DenoiseReport denoised;
+    if (denoiser) {
+        std::string error = denoiseImage(*denoiser, image, film->albedo(), film->normal(), DenoiseOptions{}, denoised);
+        if (!error.empty()) {
+            std::fprintf(err, "pt merge: error: %s; nothing was written\n", error.c_str());
+            return 1;
+        }
+    }
     if (std::string error = output.open(outputPath); !error.empty()) {
         std::fprintf(err, "pt merge: %s\n", error.c_str());
         return 2;
@@ -233,8 +258,10 @@ int mergeCommand(int argc, char** argv) {
     else std::snprintf(sppText, sizeof sppText, "%u to %u of %u spp (mean %.1f)", counts.fewest, counts.most, spp, counts.mean);
     std::string convergedText =
         adaptive ? ", " + std::to_string(converged) + " of " + std::to_string(size_t(width) * height) + " pixels converged" : "";
-    std::printf("pt merge: %zu parts, %dx%d, %s%s, %.3f s of rendering -> %s\n", merged.size(), width, height, sppText,
-                convergedText.c_str(), seconds, outputPath.c_str());
+    char denoiseText[160] = "";
+    if (denoiser) std::snprintf(denoiseText, sizeof denoiseText, ", denoised in %.3f s (OIDN %s)", denoised.seconds, denoiser->version().c_str());
+    std::printf("pt merge: %zu parts, %dx%d, %s%s, %.3f s of rendering%s -> %s\n", merged.size(), width, height, sppText,
+                convergedText.c_str(), seconds, denoiseText, outputPath.c_str());
     return 0;
 }
 

@@ -3,6 +3,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/console.h"
+#include "cli/denoising.h"
 #include "cli/stop_signals.h"
 #include "core/system.h"
 #include "io/output_file.h"
@@ -101,6 +102,14 @@ options (default in brackets):
   --sun-dir X,Y,Z        the direction towards the sun, instead of the two angles
   --turbidity T          haze, from 1.7 (very clear) to 10 (hazy) [3]
   --sky-scale S          multiply the sky's, sun's and ground's radiance by S [1]
+  --denoise              denoise the image with Intel Open Image Denoise (its RT filter on
+                         the CPU, guided by the albedo and normal, which are gathered through
+                         mirrors and smooth glass and denoised first); after the last pass,
+                         outside a --time budget. The EXR's RGB is denoised and the raw
+                         estimate is kept as layer noisy (what pt diff compares); a .png holds
+                         the denoised picture. Needs tools/install-oidn (or PT_OIDN_LIBRARY
+                         naming libOpenImageDenoise.so.2); not with --samples or --crop (denoise
+                         the merged image: pt merge --denoise) [off]
   --exposure EV          multiply the image by 2^EV (the variance layer by its square),
                          EV in [-32, 32] [0]
   --clamp X              scale down any sample whose largest channel exceeds X: fewer
@@ -153,6 +162,7 @@ struct RenderArgs {
     int threads = 0;
     RenderSettings settings;
     AovSelection aovs;
+    bool denoise = false;
     bool quiet = false;
     std::string env;
     double envRotate = 0.0, envScale = 1.0;
@@ -262,6 +272,8 @@ RenderArgs parseArgs(int argc, char** argv) {
             else throw UsageError("option --sampler: expected sobol or random, got \"" + v + "\"");
         } else if (opt == "aov") {
             r.aovs = parseAovList(args.value(opt));
+        } else if (opt == "denoise") {
+            r.denoise = true;
         } else if (opt == "exposure") {
             r.exposure = args.number(opt, -kMaxExposure, kMaxExposure);
         } else if (opt == "clamp") {
@@ -357,6 +369,10 @@ RenderArgs parseArgs(int argc, char** argv) {
     if (r.budget.adaptive() && r.samplesGiven)
         throw UsageError("--noise decides per pixel from all of its samples, which a --samples part does not see; "
                          "split an adaptive render with --crop (each crop adaptive over its own pixels)");
+    if (r.denoise && r.part())
+        throw UsageError(std::string("--denoise with ") + (r.samplesGiven ? "--samples" : "--crop") +
+                         ": a part is denoised only once merged (denoising the parts apart would not give the "
+                         "merged image); render the parts with --aov albedo,normal and run pt merge --denoise");
     bool anyAov = r.aovs.any();
     if ((r.part() || !r.resume.empty()) && formatFromPath(r.output) != ImageFormat::Exr)
         throw UsageError(std::string(r.samplesGiven ? "--samples" : r.cropGiven ? "--crop" : "--resume") +
@@ -565,8 +581,8 @@ std::string readResumePart(const std::string& path, const Image& job, const Pixe
     if (info.x0 != window.x0 || info.y0 != window.y0 || info.x1 != window.x1 || info.y1 != window.y1)
         return "--resume " + path + ": its pixels are not this command's --crop";
     if (firstHitLayers && !film.hasFirstHitLayers())
-        return "--resume " + path + ": it has no first-hit sums, so --aov albedo, normal and depth cannot go on from it "
-               "(resume without them)";
+        return "--resume " + path + ": it has no first-hit sums, so --aov albedo, normal and depth and --denoise cannot "
+               "go on from it (resume without them)";
     return "";
 }
 
@@ -592,6 +608,19 @@ int renderCommand(int argc, char** argv) {
         std::fprintf(err, "pt render: %s\n", e.what());
         return 2;
     }
+
+    // The denoiser is opened before anything is loaded or written: a missing library is a usage
+    // error found at once, not after an hour of rendering.
+    const int hardware = tbb::info::default_concurrency();
+    const int threads = args.threads > 0 ? std::min(args.threads, hardware) : hardware;
+    std::unique_ptr<Denoiser> denoiser;
+    if (args.denoise) {
+        int status = 0;
+        denoiser = openDenoiser("pt render", threads, err, status);
+        if (!denoiser) return status;
+    }
+    // Gathered for --aov albedo, normal, depth, and as the denoiser's guides.
+    const bool firstHitLayers = args.aovs.firstHit() || args.denoise;
 
     RenderProgress progress;
     // Until the render starts a signal quits at once (there is nothing to keep); from then on it
@@ -637,8 +666,6 @@ int renderCommand(int argc, char** argv) {
     addDefaultLighting(scene, warnings);
     double loadSeconds = secondsSince(t0);
 
-    int hardware = tbb::info::default_concurrency();
-    int threads = args.threads > 0 ? std::min(args.threads, hardware) : hardware;
     if (args.threads > hardware)
         warnings.add("--threads " + std::to_string(args.threads) + ": this machine runs " + std::to_string(hardware) +
                      " threads at once; using " + std::to_string(hardware));
@@ -694,8 +721,7 @@ int renderCommand(int argc, char** argv) {
     Image resumeImage;
     Film resumeFilm(0, 0);
     if (!args.resume.empty()) {
-        std::string error = readResumePart(args.resume, job, window, first, last,
-                                           args.aovs.firstHit(), resumeImage, resumeFilm);
+        std::string error = readResumePart(args.resume, job, window, first, last, firstHitLayers, resumeImage, resumeFilm);
         if (!error.empty()) {
             std::fprintf(err, "pt: error: %s\n", error.c_str());
             return 1;
@@ -727,7 +753,7 @@ int renderCommand(int argc, char** argv) {
         RenderRange range{first, last, window, args.resume.empty() ? nullptr : &resumeFilm};
         rendered.emplace(renderImage(scene, *accel, scene.cameras[cameraIndex], args.width, args.height,
                                      uint32_t(args.spp), threads, args.settings, &progress,
-                                     args.aovs.firstHit(), range, budget));
+                                     firstHitLayers, range, budget));
     } catch (const std::bad_alloc&) {
         line.stop();
         std::fprintf(err, "pt: error: out of memory for a %dx%d image; choose a smaller --res\n", args.width, args.height);
@@ -772,6 +798,18 @@ int renderCommand(int argc, char** argv) {
                          args.output.c_str());
         return status;
     }
+    // Denoised only here, whole: an interrupted render has written its raw partial above.
+    DenoiseReport denoised;
+    if (denoiser) {
+        std::string error = denoiseImage(*denoiser, image, result.film.albedo(), result.film.normal(), DenoiseOptions{}, denoised);
+        if (!error.empty()) {
+            std::fprintf(err, "pt: error: %s; nothing was written\n", error.c_str());
+            return 1;
+        }
+        if (denoised.replaced > 0 && !args.quiet)
+            std::fprintf(err, "pt: warning: %zu values of the image passed float's range and were given 0 before denoising\n",
+                         denoised.replaced);
+    }
     if (std::string error = writeImage(output, image); !error.empty()) {
         std::fprintf(err, "pt: error: %s\n", error.c_str());
         return 1;
@@ -803,9 +841,11 @@ int renderCommand(int argc, char** argv) {
         stopNote += ", " + std::to_string(film.convergedCount()) + " of " + std::to_string(uint64_t(window.width()) * window.height()) +
                     " pixels converged";
     if (result.outOfTime) stopNote += ", stopped by --time";
-    std::printf("pt: %dx%d, %s%s, %.3f s render (load %.3f s, bvh %.3f s), %.2f Mrays/s "
+    char denoiseText[160] = "";
+    if (denoiser) std::snprintf(denoiseText, sizeof denoiseText, ", denoised in %.3f s (OIDN %s)", denoised.seconds, denoiser->version().c_str());
+    std::printf("pt: %dx%d, %s%s, %.3f s render (load %.3f s, bvh %.3f s)%s, %.2f Mrays/s "
                 "(camera %.2fM, continuation %.2fM, shadow %.2fM), %llu discarded samples%s, %d threads -> %s\n",
-                window.width(), window.height(), sppText, stopNote.c_str(), result.seconds, loadSeconds, bvhSeconds,
+                window.width(), window.height(), sppText, stopNote.c_str(), result.seconds, loadSeconds, bvhSeconds, denoiseText,
                 double(r.total()) / result.seconds * 1e-6, r.camera * 1e-6, r.continuation * 1e-6, r.shadow * 1e-6,
                 (unsigned long long)r.discarded, clampNote.c_str(), threads, args.output.c_str());
     return 0;

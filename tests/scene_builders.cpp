@@ -77,4 +77,23 @@ void addBox(Scene& scene, Vec3 lo, Vec3 hi, uint32_t m) {
     addQuad(scene, p[2], p[6], p[7], p[3], m); // y = hi
 }
 
+void addUvQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material, Vec2 uv0, Vec2 uv1,
+               Vec3 normal) {
+    size_t before = scene.triangleCount();
+    addQuad(scene, a, b, c, d, material);
+    scene.triUvs.resize(before, glm::ivec3(-1));
+    int base = int(scene.uvs.size());
+    scene.uvs.insert(scene.uvs.end(), {uv0, Vec2(uv1.x, uv0.y), uv1, Vec2(uv0.x, uv1.y)});
+    scene.triUvs.emplace_back(base, base + 1, base + 2);
+    scene.triUvs.emplace_back(base, base + 2, base + 3);
+    if (normal != Vec3(0.0f)) {
+        scene.triNormals.resize(before, glm::ivec3(-1));
+        int n = int(scene.normals.size());
+        scene.normals.push_back(normal);
+        scene.triNormals.emplace_back(n);
+        scene.triNormals.emplace_back(n);
+    }
+    if (!scene.triNormals.empty()) scene.triNormals.resize(scene.triangleCount(), glm::ivec3(-1));
+}
+
 } // namespace pt::test

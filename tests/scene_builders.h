@@ -14,6 +14,10 @@ void addQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material);
 // `smooth`, vertex normals along the radius (facing out, or in with `inward`).
 void addIcosphere(Scene& scene, Vec3 center, float radius, int subdivisions, uint32_t material,
                   bool inward = false, bool smooth = false);
+// A quad (as addQuad) with texture coordinates: uv0 at a, uv1 at c; with a shading normal for
+// all four corners if `normal` is not zero.
+void addUvQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material, Vec2 uv0, Vec2 uv1,
+               Vec3 normal = Vec3(0.0f));
 // An axis-aligned box of six quads, normals facing out.
 void addBox(Scene& scene, Vec3 lo, Vec3 hi, uint32_t material);
 

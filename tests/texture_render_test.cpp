@@ -7,26 +7,6 @@
 namespace pt::test {
 namespace {
 
-// A quad with uvs from uv0 to uv1 (a gets uv0, c gets uv1) and optionally one vertex normal.
-void addUvQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material, Vec2 uv0, Vec2 uv1,
-               Vec3 normal = Vec3(0.0f)) {
-    size_t before = scene.triangleCount();
-    addQuad(scene, a, b, c, d, material);
-    scene.triUvs.resize(before, glm::ivec3(-1));
-    int base = int(scene.uvs.size());
-    scene.uvs.insert(scene.uvs.end(), {uv0, Vec2(uv1.x, uv0.y), uv1, Vec2(uv0.x, uv1.y)});
-    scene.triUvs.emplace_back(base, base + 1, base + 2);
-    scene.triUvs.emplace_back(base, base + 2, base + 3);
-    if (normal != Vec3(0.0f)) {
-        scene.triNormals.resize(before, glm::ivec3(-1));
-        int n = int(scene.normals.size());
-        scene.normals.push_back(normal);
-        scene.triNormals.emplace_back(n);
-        scene.triNormals.emplace_back(n);
-    }
-    if (!scene.triNormals.empty()) scene.triNormals.resize(scene.triangleCount(), glm::ivec3(-1));
-}
-
 // A texture of one value per channel, everywhere.
 int constantTexture(Scene& scene, std::vector<float> value, bool colour) {
     std::vector<float> texels;

@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# --denoise, pt merge --denoise and pt denoise as a user meets them: layers and metadata of a
+# denoised file, pt diff reading its raw estimate, and each way the input or the library is wrong.
+# Skipped (77) where OIDN is not installed, unless PT_REQUIRE_OIDN is set (CI sets it).
+# usage: denoise_cli_test.sh PT
+set -uo pipefail
+pt=$1
+root=$(cd "$(dirname "$0")/.." && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+expect() {
+  local status=$1 text=$2
+  shift 2
+  local output
+  output=$("$@" 2>&1)
+  local got=$?
+  if [[ $got -ne $status || "$output" != *"$text"* ]]; then
+    echo "FAIL: $* -> exit $got (expected $status), output:"
+    echo "$output" | head -5
+    echo "  (expected to contain: $text)"
+    failures=$((failures + 1))
+  fi
+}
+channels() { oiiotool --info -v "$1" | grep "channel list" | sed 's/.*channel list: //'; }
+meta() { oiiotool --info -v "$1" | grep "$2" | head -1; }
+scene="$root/scenes/glass.obj"
+small=(-spp 4 --res 48x36 -q)
+
+# Without the library: a usage error before anything is loaded or written.
+PT_OIDN_LIBRARY=$tmp/none.so expect 2 "tools/install-oidn" "$pt" render "$scene" "${small[@]}" --denoise -o "$tmp/x.exr"
+[[ -e $tmp/x.exr ]] && { echo "FAIL: a render refused for its library left $tmp/x.exr"; failures=$((failures + 1)); }
+PT_OIDN_LIBRARY=$tmp/none.so expect 2 "which does not exist" "$pt" denoise "$tmp/x.exr" -o "$tmp/y.exr"
+libz=$(ldconfig -p | awk '/libz.so.1 /{print $NF; exit}')
+PT_OIDN_LIBRARY=$libz expect 1 "is not Intel Open Image Denoise 2.x" "$pt" render "$scene" "${small[@]}" --denoise -o "$tmp/x.exr"
+expect 2 "a part is denoised only once merged" "$pt" render "$scene" "${small[@]}" --denoise --samples 0:2 -o "$tmp/x.exr"
+
+if ! "$pt" render "$scene" "${small[@]}" --denoise -o "$tmp/d.exr" 2>"$tmp/err.txt"; then
+  if grep -q "tools/install-oidn" "$tmp/err.txt" && [[ -z ${PT_REQUIRE_OIDN:-} ]]; then
+    echo "skipped: $(cat "$tmp/err.txt")"
+    exit 77
+  fi
+  echo "FAIL: render --denoise: $(cat "$tmp/err.txt")"
+  exit 1
+fi
+[[ $(channels "$tmp/d.exr") == "R, G, B, noisy.R, noisy.G, noisy.B" ]] || { echo "FAIL: channels $(channels "$tmp/d.exr")"; failures=$((failures + 1)); }
+meta "$tmp/d.exr" "pt:denoiser" | grep -q "OIDN 2.5.1 RT, quality high, albedo and normal prefiltered" ||
+  { echo "FAIL: pt:denoiser: $(meta "$tmp/d.exr" pt:denoiser)"; failures=$((failures + 1)); }
+expect 0 "denoised in" "$pt" render "$scene" -spp 4 --res 48x36 --denoise --aov albedo,normal,variance -o "$tmp/da.exr"
+expect 0 "-> $tmp/d.png" "$pt" render "$scene" "${small[@]}" --denoise -o "$tmp/d.png"
+
+# pt diff compares the raw estimate: the denoised render and a plain one of the same seed agree exactly.
+"$pt" render "$scene" -spp 4 --res 48x36 -q --aov albedo,normal,variance -o "$tmp/raw.exr" >/dev/null
+expect 0 "is denoised; comparing its raw estimate" "$pt" diff "$tmp/da.exr" "$tmp/raw.exr"
+expect 0 "relative MSE 0," "$pt" diff "$tmp/da.exr" "$tmp/raw.exr"
+
+# pt denoise: from the feature layers; again from a denoised file's raw estimate, to the same picture.
+expect 0 "pt denoise: 48x36" "$pt" denoise "$tmp/raw.exr" -o "$tmp/pd.exr"
+expect 0 "was denoised already" "$pt" denoise "$tmp/pd.exr" -o "$tmp/pd2.exr"
+expect 0 "relative MSE 0," "$pt" diff "$tmp/pd.exr" "$tmp/da.exr"
+python3 "$root/tests/compare_exact.py" "$tmp/pd.exr" "$tmp/pd2.exr" >/dev/null 2>&1 ||
+  oiiotool "$tmp/pd.exr" --ch R,G,B "$tmp/pd2.exr" --ch R,G,B --diff >/dev/null ||
+  { echo "FAIL: denoising a denoised file again changed the picture"; failures=$((failures + 1)); }
+"$pt" render "$scene" "${small[@]}" --aov albedo -o "$tmp/alb.exr" >/dev/null
+"$pt" render "$scene" "${small[@]}" -o "$tmp/plain.exr" >/dev/null
+expect 1 "has no albedo layer (albedo.R, albedo.G, albedo.B)" "$pt" denoise "$tmp/plain.exr" -o "$tmp/y.exr"
+expect 1 "has no normal layer (normal.X, normal.Y, normal.Z)" "$pt" denoise "$tmp/alb.exr" -o "$tmp/y.exr"
+expect 2 "expected high, balanced or fast" "$pt" denoise "$tmp/raw.exr" --quality best -o "$tmp/y.exr"
+[[ -e $tmp/y.exr ]] && { echo "FAIL: a refused pt denoise left $tmp/y.exr"; failures=$((failures + 1)); }
+
+# A split render is denoised once merged, from the parts' first-hit sums.
+"$pt" render "$scene" "${small[@]}" --aov albedo,normal --samples 0:2 -o "$tmp/p0.exr" >/dev/null
+"$pt" render "$scene" "${small[@]}" --aov albedo,normal --samples 2:4 -o "$tmp/p1.exr" >/dev/null
+expect 0 "denoised in" "$pt" merge "$tmp/p0.exr" "$tmp/p1.exr" --denoise -o "$tmp/m.exr"
+expect 0 "relative MSE 0," "$pt" diff "$tmp/m.exr" "$tmp/d.exr"
+expect 1 "is a part of a split render" "$pt" denoise "$tmp/p0.exr" -o "$tmp/y.exr"
+"$pt" render "$scene" "${small[@]}" --samples 0:2 -o "$tmp/q0.exr" >/dev/null
+expect 1 "has no first-hit sums; --denoise" "$pt" merge "$tmp/q0.exr" --denoise -o "$tmp/y.exr"
+
+# An interrupted --denoise render writes its raw partial, never a denoised one.
+"$pt" render "$scene" -spp 100000 --res 256x256 --threads 1 --denoise -q -o "$tmp/long.exr" &
+pid=$!
+sleep 2
+kill -TERM $pid
+wait $pid
+[[ -e $tmp/long.partial.exr && ! -e $tmp/long.exr ]] || { echo "FAIL: no partial after an interrupt"; failures=$((failures + 1)); }
+if [[ -e $tmp/long.partial.exr ]] && oiiotool --info -v "$tmp/long.partial.exr" | grep -q "pt:denoiser\|noisy"; then
+  echo "FAIL: the partial of an interrupted --denoise render is denoised"
+  failures=$((failures + 1))
+fi
+
+if [[ $failures -ne 0 ]]; then
+  echo "$failures check(s) failed"
+  exit 1
+fi
+echo "all denoise command-line checks passed"
