@@ -299,7 +299,7 @@ check crop_form 2 'option --crop: expected X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <
 check resume_other_job 1 'it is a part of another job: its pt:seed is "7", this command'"'"'s is "0"' render m.obj "${split[@]}" --samples 4:8 --resume part_seed.exr -o out/a.exr
 check resume_other_range 1 'it holds samples 0:4, this command renders 4:8' render m.obj "${split[@]}" --samples 4:8 --resume part_a.exr -o out/a.exr
 check resume_not_part 1 'whole.exr: it is not a part' render m.obj "${split[@]}" --resume whole.exr -o out/a.exr
-check resume_no_layers 1 'it has no first-hit sums, so --aov albedo, normal and depth cannot go on from it' render m.obj "${split[@]}" --samples 0:4 --aov albedo --resume part_a.exr -o out/a.exr
+check resume_no_layers 1 'it has no first-hit sums, so --aov albedo, normal and depth and --denoise cannot go on from it' render m.obj "${split[@]}" --samples 0:4 --aov albedo --resume part_a.exr -o out/a.exr
 check resume_missing 1 '--resume: cannot read "nowhere.exr"' render m.obj "${split[@]}" --resume nowhere.exr -o out/a.exr
 
 # Issue 24: the newer options and inputs within the range pt renders correctly. Each is refused
