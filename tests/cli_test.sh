@@ -8,20 +8,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failures=0
 
-# expect STATUS TEXT command...: the command exits with STATUS and prints TEXT (stdout or stderr).
-expect() {
-  local status=$1 text=$2
-  shift 2
-  local output
-  output=$("$@" 2>&1)
-  local got=$?
-  if [[ $got -ne $status || "$output" != *"$text"* ]]; then
-    echo "FAIL: $* -> exit $got (expected $status), output:"
-    echo "$output" | head -5
-    echo "  (expected to contain: $text)"
-    failures=$((failures + 1))
-  fi
-}
+source "$root/tests/expect_lib.sh"
 
 scene="$root/scenes/cornell_box.obj"
 expect 0 "usage: pt <command>" "$pt" --help

@@ -9,19 +9,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failures=0
-expect() {
-  local status=$1 text=$2
-  shift 2
-  local output
-  output=$("$@" 2>&1)
-  local got=$?
-  if [[ $got -ne $status || "$output" != *"$text"* ]]; then
-    echo "FAIL: $* -> exit $got (expected $status), output:"
-    echo "$output" | head -5
-    echo "  (expected to contain: $text)"
-    failures=$((failures + 1))
-  fi
-}
+source "$root/tests/expect_lib.sh"
 channels() { oiiotool --info -v "$1" | grep "channel list" | sed 's/.*channel list: //'; }
 meta() { oiiotool --info -v "$1" | grep "$2" | head -1; }
 scene="$root/scenes/glass.obj"

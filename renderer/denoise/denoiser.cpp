@@ -135,12 +135,11 @@ std::unique_ptr<Denoiser> Denoiser::open(int threads, std::string& missing) {
     if (a.getDeviceError(device, &message) != oidn::kErrorNone)
         throw DenoiseError("Intel Open Image Denoise (" + path + "): " + (message ? message : "device error"));
     int version = a.getDeviceInt(device, "version"); // 20501 for 2.5.1
-    if (version < 20000 || version >= 30000)
-        throw DenoiseError(path + " is Intel Open Image Denoise version " + std::to_string(version / 10000) + "." +
-                           std::to_string(version / 100 % 100) + "." + std::to_string(version % 100) +
-                           "; pt needs 2.x (tools/install-oidn installs 2.5.1)");
     d->version_ = std::to_string(version / 10000) + "." + std::to_string(version / 100 % 100) + "." +
                   std::to_string(version % 100);
+    if (version < 20000 || version >= 30000)
+        throw DenoiseError(path + " is Intel Open Image Denoise version " + d->version_ +
+                           "; pt needs 2.x (tools/install-oidn installs 2.5.1)");
     return d;
 }
 
