@@ -8,7 +8,7 @@
 #include "image/image_io.h"
 #include "io/output_file.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "load/scene_loader.h"
 
 #include <tbb/task_arena.h>
 

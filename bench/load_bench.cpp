@@ -4,7 +4,7 @@
 #include "accel/accel.h"
 #include "bench/bench_common.h"
 #include "render/shading_triangles.h"
-#include "scene/scene_loader.h"
+#include "load/scene_loader.h"
 
 #include <tbb/task_arena.h>
 

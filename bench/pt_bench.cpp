@@ -5,9 +5,9 @@
 #include "accel/accel.h"
 #include "bench/bench_common.h"
 #include "io/output_file.h"
-#include "light/environment_map.h"
+#include "environment/environment_map.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "load/scene_loader.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>

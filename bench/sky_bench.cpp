@@ -4,7 +4,7 @@
 // hemisphere; and the one-off cost per render of baking the map and building its sampler.
 #include "bench/bench_common.h"
 #include "light/environment_light.h"
-#include "light/sky_environment.h"
+#include "environment/sky_environment.h"
 #include "sampling/rng.h"
 #include "sampling/warp.h"
 

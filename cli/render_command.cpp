@@ -8,13 +8,14 @@
 #include "core/system.h"
 #include "io/output_file.h"
 #include "image/image_io.h"
-#include "light/sky_environment.h"
+#include "environment/sky_environment.h"
 #include "render/film_image.h"
 #include "render/film_part.h"
 #include "render/render_job.h"
 #include "render/renderer.h"
-#include "scene/scene_limits.h"
-#include "scene/scene_loader.h"
+#include "io/scene_limits.h"
+#include "load/scene_loader.h"
+#include "scene/complete_scene.h"
 
 #include <tbb/info.h>
 #include <tbb/task_arena.h>

@@ -437,7 +437,7 @@ def write_exr(name, pixels):
 
 
 # Texels (columns x and x + 1, row y) of each marker of env_marker.exr and its colour. With the
-# convention of renderer/light/environment_map.h, the edge between columns x and x + 1 of 64 looks
+# convention of renderer/environment/environment_map.h, the edge between columns x and x + 1 of 64 looks
 # along phi = 2 pi ((x + 1) / 64 - 0.5) from +x towards +z, and row y of 32 at
 # theta = pi (y + 0.5) / 32 from +y.
 ENV_MARKERS = (

@@ -4,7 +4,7 @@
 #include "accel/accel.h"
 #include "image/compare.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "load/scene_loader.h"
 
 #include <gtest/gtest.h>
 

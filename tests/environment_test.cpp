@@ -4,7 +4,7 @@
 #include "light/light_set.h"
 #include "image/compare.h"
 #include "sampling/rng.h"
-#include "scene/load_error.h"
+#include "io/load_error.h"
 #include "tests/chi_square.h"
 #include "tests/test_scenes.h"
 

@@ -5,7 +5,8 @@
 #include "gltf/gltf_loader.h"
 #include "material/sheen.h"
 #include "render/vertex_tangents.h"
-#include "scene/scene_loader.h"
+#include "load/scene_loader.h"
+#include "scene/complete_scene.h"
 #include "tests/gltf_brdf_reference.h"
 #include "tests/test_scenes.h"
 

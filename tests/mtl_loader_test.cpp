@@ -1,5 +1,5 @@
-#include "scene/mtl_loader.h"
-#include "light/environment_map.h"
+#include "obj/mtl_loader.h"
+#include "environment/environment_map.h"
 #include "material/lab_bsdf.h"
 
 #include <gtest/gtest.h>

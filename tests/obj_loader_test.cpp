@@ -1,5 +1,5 @@
-#include "scene/obj_loader.h"
-#include "scene/scene_loader.h"
+#include "obj/obj_loader.h"
+#include "load/scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Rays leaving a surface must not hit it again, at any scale and any distance from the origin:
 // the offset comes from an error bound, not an epsilon (cf. pbrt's Triangle.Reintersect).
 #include "accel/accel.h"
-#include "accel/ray_offset.h"
-#include "render/surface_point.h"
+#include "core/ray_offset.h"
+#include "render/surface_hit.h"
 #include "sampling/rng.h"
 #include "sampling/warp.h"
 #include "tests/test_scenes.h"

@@ -2,8 +2,9 @@
 // cosine or pi, a wrong pdf, a double-counted light, a self-intersecting ray.
 #include "tests/test_scenes.h"
 
-#include "scene/scene_limits.h"
-#include "scene/scene_loader.h"
+#include "io/scene_limits.h"
+#include "load/scene_loader.h"
+#include "scene/complete_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -346,7 +347,7 @@ float triangleSpan(const Scene& s) {
     return safeLength(hi - lo);
 }
 
-// The two ends of the range the loaders accept (scene/scene_limits.h): the largest coordinate at
+// The two ends of the range the loaders accept (io/scene_limits.h): the largest coordinate at
 // exactly kMaxCoordinate, and the triangles spanning exactly kMinSceneSize. Both scenes must
 // load and render the unit scene's image. Beyond either end Embree loses hits (the Cornell box
 // changes at 3x the largest coordinate accepted and at 1/300 of the smallest size).

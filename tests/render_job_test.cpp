@@ -3,7 +3,7 @@
 // a Slurm array runs) cannot give a part the identity of content it did not use, and the same
 // content gives the same identity wherever its files lie.
 #include "render/render_job.h"
-#include "scene/scene_loader.h"
+#include "load/scene_loader.h"
 
 #include <gtest/gtest.h>
 

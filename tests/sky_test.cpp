@@ -2,8 +2,8 @@
 // values, the sky's stability over the whole sphere, the sun's radiance against its spectrum, the
 // baked map against the model, and renders whose result is known or must agree between strategies.
 #include "light/light_set.h"
-#include "light/sky_environment.h"
-#include "light/sunlight.h"
+#include "environment/sky_environment.h"
+#include "environment/sunlight.h"
 #include "sampling/rng.h"
 #include "sampling/warp.h"
 #include "tests/test_scenes.h"

@@ -5,7 +5,7 @@
 #include "tests/test_scenes.h"
 
 #include "image/compare.h"
-#include "scene/scene_loader.h"
+#include "load/scene_loader.h"
 
 #include <gtest/gtest.h>
 

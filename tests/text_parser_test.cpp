@@ -1,4 +1,4 @@
-#include "scene/text_parser.h"
+#include "obj/text_parser.h"
 
 #include <gtest/gtest.h>
 

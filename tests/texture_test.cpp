@@ -1,6 +1,6 @@
 // Texture lookups and the MTL map options: which way v runs, repeat against clamp, -s and -o.
 #include "core/color.h"
-#include "scene/mtl_loader.h"
+#include "obj/mtl_loader.h"
 #include "texture/texture_cache.h"
 #include "texture/texture_io.h"
 #include "tests/test_scenes.h"

@@ -1,6 +1,6 @@
 #include "accel/accel.h"
 
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 #include <embree3/rtcore.h>
 

@@ -10,7 +10,7 @@
 
 namespace pt {
 
-// Rays always start at tnear = 0: surface origins are offset by spawnRay (accel/ray_offset.h)
+// Rays always start at tnear = 0: surface origins are offset by spawnRay (core/ray_offset.h)
 // instead of relying on an epsilon here. `dir` must be unit length.
 struct Ray {
     Vec3 origin;

@@ -2,8 +2,10 @@
 // command line.
 #pragma once
 
+#include <cctype>
 #include <cstdio>
 #include <string>
+#include <string_view>
 #include <unistd.h>
 
 namespace pt {
@@ -20,6 +22,20 @@ inline std::string shortNumber(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6g", v);
     return buf;
+}
+
+// Case-insensitive ASCII comparison, for MTL keywords and file extensions.
+inline bool equalsIgnoreCase(std::string_view a, std::string_view b) {
+    if (a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i)
+        if (std::tolower((unsigned char)a[i]) != std::tolower((unsigned char)b[i])) return false;
+    return true;
+}
+
+inline std::string toLower(std::string_view s) {
+    std::string r(s);
+    for (char& c : r) c = char(std::tolower((unsigned char)c));
+    return r;
 }
 
 } // namespace pt

@@ -6,7 +6,7 @@
 // sparse accessors are applied over their base.
 #pragma once
 
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 #include <tiny_gltf.h>
 

@@ -1,7 +1,7 @@
 #include "gltf/gltf_document.h"
 
 #include "core/system.h"
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 #include <nlohmann/json.hpp>
 

@@ -4,10 +4,10 @@
 #include "gltf/gltf_document.h"
 #include "io/input_file.h"
 #include "core/system.h"
-#include "scene/scene_limits.h"
-#include "scene/scene_loader.h"
+#include "io/scene_limits.h"
+#include "scene/complete_scene.h"
 #include "core/math.h"
-#include "scene/text_parser.h"
+#include "core/system.h"
 #include "texture/texture_io.h"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -4,7 +4,7 @@
 // decoded by OpenImageIO. Every index and accessor is checked before use (gltf_accessors.h).
 #pragma once
 
-#include "scene/load_error.h"
+#include "io/load_error.h"
 #include "scene/scene.h"
 
 #include <string>

@@ -5,7 +5,7 @@
 // light sampling alone (--light-sampling nee) converges too.
 #pragma once
 
-#include "light/environment_map.h"
+#include "environment/environment_map.h"
 #include "sampling/distribution2d.h"
 
 namespace pt {

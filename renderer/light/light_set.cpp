@@ -1,9 +1,9 @@
 #include "light/light_set.h"
 
-#include "accel/ray_offset.h"
-#include "light/sky_environment.h"
+#include "core/ray_offset.h"
+#include "environment/sky_environment.h"
 #include "light/sphere_light_sampling.h"
-#include "material/evaluate_material.h"
+#include "scene/emission.h"
 #include "sampling/warp.h"
 
 #include <algorithm>

@@ -3,8 +3,9 @@
 // plain values: a batch of hits can fetch together, then shade together.
 #pragma once
 
-#include "render/surface_point.h"
+#include "scene/emission.h"
 #include "scene/scene.h"
+#include "scene/surface_point.h"
 #include "texture/texture_cache.h"
 
 namespace pt {
@@ -26,12 +27,6 @@ struct SurfaceInputs {
     float clearcoatRoughness = 1.0f; // clearcoatRoughnessTexture G (perceptual)
     Vec3 clearcoatNormal{0.0f};     // the coat's normal (its own map, else the interpolated one); set where clearcoat > 0
 };
-
-// Radiance a material emits at texture coordinates uv: Ke, times its emission texture (glTF).
-inline Spectrum emittedRadiance(const Material& m, const TextureCache& textures, Vec2 uv, const Footprint& footprint) {
-    if (!m.emissionMap.used()) return m.emission;
-    return m.emission * textures.color(m.emissionMap, uv, footprint);
-}
 
 // The interpolated normal after a tangent-space normal map (y along increasing v), unnormalized.
 inline Vec3 normalFromMap(const TextureMap& map, const TextureCache& textures, const SurfacePoint& sp) {

@@ -1,7 +1,7 @@
 #include "render/path_tracer.h"
 
 #include "material/evaluate_material.h"
-#include "render/surface_point.h"
+#include "render/surface_hit.h"
 
 namespace pt {
 namespace {

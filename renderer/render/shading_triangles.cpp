@@ -1,6 +1,6 @@
 #include "render/shading_triangles.h"
 
-#include "accel/ray_offset.h"
+#include "core/ray_offset.h"
 
 #include <algorithm>
 

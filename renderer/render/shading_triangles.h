@@ -12,7 +12,7 @@ namespace pt {
 struct alignas(64) ShadingTriangle {
     Vec3 p0, e1, e2;           // first vertex and the edges to the other two
     uint32_t materialAndFlags; // material index, and how the shading normal is stored
-    float offsetError;         // bound for offsetting ray origins (accel/ray_offset.h)
+    float offsetError;         // bound for offsetting ray origins (core/ray_offset.h)
     union {
         uint32_t normals[3]; // kSmooth: unit vertex normals, octahedral-encoded (16 bits per axis)
         float flatNormal[3]; // kFlat: the one unit normal all three vertices share (walls, boxes)

@@ -3,9 +3,7 @@
 #pragma once
 
 #include "core/math.h"
-#include "light/environment_map.h"
-#include "light/preetham_sky.h"
-#include "light/sun_disk.h"
+#include "environment/environment.h"
 #include "texture/texture_cache.h"
 
 #include <cstdint>
@@ -114,25 +112,6 @@ struct Material {
                emissionMap.used() || vertexColors || clearcoatMap.used() || clearcoatRoughnessMap.used() ||
                clearcoatNormalMap.used() || specularMap.used() || transmissionMap.used() ||
                sheenColorMap.used() || sheenRoughnessMap.used();
-    }
-};
-
-// Radiance seen by rays that leave the scene: an HDR map where one is given (it is then a light of
-// the light set, sampled by next-event estimation), else the lab's two tones, `sky` for
-// directions with y > 0 and `ground` below, reached by BSDF sampling only as the lab has it.
-// The Preetham sky is evaluated from the model itself (the light set bakes a map of it as the
-// density that samples it, light/sky_environment.h), and the sun's disk is a light of its own.
-struct Environment {
-    Spectrum sky{0.5f, 0.6f, 0.7f};
-    Spectrum ground{0.05f, 0.025f, 0.001f};
-    std::shared_ptr<const EnvironmentMap> map;
-    std::optional<SunDisk> sun;
-    std::shared_ptr<const PreethamSky> preetham;
-
-    Spectrum radiance(const Vec3& dir) const {
-        if (preetham) return preetham->radiance(dir);
-        if (map) return map->radiance(dir);
-        return dir.y > 0.0f ? sky : ground;
     }
 };
 

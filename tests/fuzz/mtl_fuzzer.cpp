@@ -1,7 +1,7 @@
 // libFuzzer target for the lab's extended MTL (materials, lights, cameras, texture maps). Any
 // input must either parse or throw a LoadError; texture paths resolve against scenes/, where the
 // textures of the repository's scenes lie, so map lines load real images.
-#include "scene/mtl_loader.h"
+#include "obj/mtl_loader.h"
 
 #include <cstdint>
 #include <string_view>

@@ -3,8 +3,9 @@
 // hang is a bug. mtllib and texture paths resolve against a folder that does not exist.
 #include "light/light_set.h"
 #include "render/shading_triangles.h"
-#include "scene/obj_loader.h"
-#include "scene/scene_loader.h"
+#include "obj/obj_loader.h"
+#include "load/scene_loader.h"
+#include "scene/complete_scene.h"
 
 #include <cstdint>
 #include <string_view>

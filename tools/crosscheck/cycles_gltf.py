@@ -164,7 +164,7 @@ def importer_camera(scene, cam):
 
 # ---------------------------------------------------------------- framing, pt's way
 def frame_bounds(scene):
-    """pt's camera for a file without one (renderer/scene/scene_loader.cpp, frameScene): the
+    """pt's camera for a file without one (renderer/load/scene_loader.cpp, frameScene): the
     bounds of the vertices of faces (pt skips point and line primitives), meshes alone."""
     bpy.context.view_layer.update()  # children's world matrices are stale until the scene is evaluated
     lo = np.full(3, np.inf)

@@ -1,29 +1,15 @@
-// What the path loop knows about a triangle hit: position with its error bound, normals and
-// material, recomputed from the hit's barycentrics (more accurate than origin + t * dir).
+// A triangle hit made into a SurfacePoint: position with its error bound, normals and material,
+// recomputed from the hit's barycentrics (more accurate than origin + t * dir); its texture
+// coordinates and footprint; and the rays that leave it.
 #pragma once
 
 #include "accel/accel.h"
-#include "accel/ray_offset.h"
+#include "core/ray_offset.h"
+#include "scene/surface_point.h"
 #include "render/shading_triangles.h"
 #include "render/vertex_tangents.h"
 
 namespace pt {
-
-struct SurfacePoint {
-    Vec3 p;
-    float pError; // bound on |p - true surface point|, see accel/ray_offset.h
-    Vec3 ng;      // unit geometric normal, on the outside as the vertex normals define it
-    Vec3 ns;      // unit shading normal, same hemisphere as ng
-    uint32_t material;
-
-    // Filled for textured materials only (addTextureCoordinates).
-    Vec2 uv{0.0f};
-    Vec3 dpdu{0.0f}, dpdv{0.0f}; // zero where the uv layout is degenerate
-    Footprint footprint;         // what a lookup filters over (a ray cone's ellipse, in uv)
-    Vec3 tangent{0.0f};          // interpolated vertex tangent (normal maps), not renormalised
-    float bitangentSign = 1.0f;
-    Spectrum color{1.0f};        // interpolated vertex colour (glTF COLOR_0)
-};
 
 inline SurfacePoint makeSurfacePoint(const ShadingTriangle& tri, const Hit& hit) {
     SurfacePoint sp;

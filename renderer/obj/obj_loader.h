@@ -1,7 +1,7 @@
 // Wavefront OBJ geometry with the lab's extended MTL (materials, lights, cameras).
 #pragma once
 
-#include "scene/load_error.h"
+#include "io/load_error.h"
 #include "scene/scene.h"
 
 #include <string>

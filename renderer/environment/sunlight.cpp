@@ -1,4 +1,4 @@
-#include "light/sunlight.h"
+#include "environment/sunlight.h"
 
 #include <algorithm>
 #include <cmath>

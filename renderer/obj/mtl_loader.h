@@ -2,7 +2,7 @@
 // plus `newlight` and `newcamera` blocks. Keywords are case-insensitive.
 #pragma once
 
-#include "scene/load_error.h"
+#include "io/load_error.h"
 #include "scene/scene.h"
 
 #include <string>

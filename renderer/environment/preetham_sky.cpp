@@ -1,6 +1,6 @@
-#include "light/preetham_sky.h"
+#include "environment/preetham_sky.h"
 
-#include "light/sunlight.h"
+#include "environment/sunlight.h"
 
 #include <algorithm>
 #include <cmath>

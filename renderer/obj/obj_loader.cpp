@@ -1,9 +1,9 @@
-#include "scene/obj_loader.h"
+#include "obj/obj_loader.h"
 
 #include "io/input_file.h"
 
-#include "scene/mtl_loader.h"
-#include "scene/text_parser.h"
+#include "obj/mtl_loader.h"
+#include "obj/text_parser.h"
 
 #include <charconv>
 #include <filesystem>

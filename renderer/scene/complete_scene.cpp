@@ -1,10 +1,8 @@
-#include "scene/scene_loader.h"
+#include "scene/complete_scene.h"
 
-#include "gltf/gltf_loader.h"
-#include "light/environment_map.h"
-#include "scene/obj_loader.h"
-#include "scene/scene_limits.h"
-#include "scene/text_parser.h"
+#include "core/system.h"
+#include "environment/environment_map.h"
+#include "io/scene_limits.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -122,7 +120,7 @@ static void checkMaps(const Scene& scene, const Material& m) {
     }
 }
 
-// The limits of scene/scene_limits.h that depend on the size of the whole scene.
+// The limits of io/scene_limits.h that depend on the size of the whole scene.
 static void checkSceneLimits(const Scene& scene) {
     Vec3 lo, hi;
     triangleBounds(scene, lo, hi);
@@ -165,20 +163,6 @@ static void checkSceneLimits(const Scene& scene) {
                             shortNumber(size) + "), where its solid angle underflows float; use 0 for a point light");
         }
     }
-}
-
-Scene loadScene(const std::string& path, Warnings& warnings) {
-    std::string ext = toLower(std::filesystem::path(path).extension().string());
-    Scene scene;
-    if (ext == ".obj") {
-        scene = loadObj(path, warnings);
-    } else if (ext == ".gltf" || ext == ".glb") {
-        scene = loadGltf(path, warnings);
-    } else {
-        throw LoadError(path + ": unsupported scene format \"" + ext + "\"; expected .obj, .gltf or .glb");
-    }
-    completeScene(scene, warnings);
-    return scene;
 }
 
 static bool isGltf(const std::string& path) {

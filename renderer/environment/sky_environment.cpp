@@ -1,6 +1,6 @@
-#include "light/sky_environment.h"
+#include "environment/sky_environment.h"
 
-#include "scene/scene.h"
+#include "environment/environment.h"
 
 #include <tbb/parallel_for.h>
 

@@ -1,16 +1,13 @@
-// Entry point for loading any supported scene file.
+// What every loader's scene goes through, whatever its format: a camera where the file has
+// none, the checks against io/scene_limits.h, glTF's default lighting, and the scene's bounds.
 #pragma once
 
-#include "scene/load_error.h"
+#include "io/load_error.h"
 #include "scene/scene.h"
 
 #include <string>
 
 namespace pt {
-
-// Loads a scene by its extension: .obj (with its MTL files), .gltf or .glb. Afterwards the scene has at least one camera: if the
-// file defines none, one framing the whole scene is added and a warning says so.
-Scene loadScene(const std::string& path, Warnings& warnings);
 
 // What loadScene does after parsing, for any format: adds the framing camera if there is none
 // and warns about degenerate triangles or an empty scene.

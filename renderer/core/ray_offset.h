@@ -4,7 +4,6 @@
 // far from the origin, is traced the same way.
 #pragma once
 
-#include "accel/accel.h"
 #include "core/math.h"
 
 namespace pt {

@@ -1,11 +1,11 @@
-#include "light/environment_map.h"
+#include "environment/environment_map.h"
 
 #include "image/image_input.h"
 #include "io/input_file.h"
 
 #include "core/system.h"
-#include "scene/load_error.h"
-#include "scene/scene_limits.h"
+#include "io/load_error.h"
+#include "io/scene_limits.h"
 #include "texture/texture_io.h"
 
 #include <OpenImageIO/imageio.h>

@@ -1,11 +1,11 @@
-#include "scene/mtl_loader.h"
+#include "obj/mtl_loader.h"
 
 #include "io/input_file.h"
 
-#include "light/environment_map.h"
-#include "light/sky_environment.h"
+#include "environment/environment_map.h"
+#include "environment/sky_environment.h"
 #include "texture/texture_io.h"
-#include "scene/text_parser.h"
+#include "obj/text_parser.h"
 
 #include <algorithm>
 #include <charconv>

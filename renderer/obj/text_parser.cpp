@@ -1,4 +1,4 @@
-#include "scene/text_parser.h"
+#include "obj/text_parser.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -169,19 +169,6 @@ Spectrum Tokens::color(std::string_view what) {
 void Tokens::expectEnd(std::string_view keyword) {
     if (!empty())
         fail(std::string(keyword) + ": unexpected " + quoted(word()) + " at the end of the line");
-}
-
-bool equalsIgnoreCase(std::string_view a, std::string_view b) {
-    if (a.size() != b.size()) return false;
-    for (size_t i = 0; i < a.size(); ++i)
-        if (std::tolower((unsigned char)a[i]) != std::tolower((unsigned char)b[i])) return false;
-    return true;
-}
-
-std::string toLower(std::string_view s) {
-    std::string r(s);
-    for (char& c : r) c = char(std::tolower((unsigned char)c));
-    return r;
 }
 
 } // namespace pt

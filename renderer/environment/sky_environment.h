@@ -6,9 +6,9 @@
 // emitter of its own.
 #pragma once
 
-#include "light/environment_map.h"
-#include "light/preetham_sky.h"
-#include "light/sun_disk.h"
+#include "environment/environment_map.h"
+#include "environment/preetham_sky.h"
+#include "environment/sun_disk.h"
 
 namespace pt {
 

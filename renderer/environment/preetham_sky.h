@@ -1,7 +1,7 @@
 // The clear-sky daylight model of Preetham, Shirley and Smits 1999 ("A Practical Analytic Model
 // for Daylight"): the sky's luminance and chromaticity as Perez et al.'s distributions fitted to
 // turbidity and the sun's zenith angle, and the sun as a disk whose colour is the solar spectrum
-// attenuated along its path through the atmosphere (light/sunlight.h).
+// attenuated along its path through the atmosphere (environment/sunlight.h).
 //
 // Units: radiance is 0.06 times the model's luminance in kcd/m^2 (Cycles' legacy Preetham sky
 // uses the same factor), in linear Rec.709 RGB; `scale` multiplies sky, sun and ground alike.

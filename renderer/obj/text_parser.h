@@ -4,8 +4,8 @@
 
 #include "core/math.h"
 #include "core/system.h"
-#include "scene/load_error.h"
-#include "scene/scene_limits.h"
+#include "io/load_error.h"
+#include "io/scene_limits.h"
 
 #include <string>
 #include <string_view>
@@ -47,7 +47,7 @@ public:
     float number(std::string_view what);
     int integer(std::string_view what);
     Vec3 vec3(std::string_view what);
-    // A point in the scene: three numbers within +-kMaxCoordinate (scene/scene_limits.h). Embree
+    // A point in the scene: three numbers within +-kMaxCoordinate (io/scene_limits.h). Embree
     // loses hits beyond it, so larger ones are refused here, where the line is known.
     Vec3 point(std::string_view what);
     // One value replicated to three channels, or three values (the MTL colour forms).
@@ -63,9 +63,5 @@ private:
     std::string_view rest_;
     const LineReader& where_;
 };
-
-// Case-insensitive ASCII comparison, for MTL keywords.
-bool equalsIgnoreCase(std::string_view a, std::string_view b);
-std::string toLower(std::string_view s);
 
 } // namespace pt
