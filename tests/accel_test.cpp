@@ -21,7 +21,7 @@ Scene sphereField(Pcg32& rng, int count) {
     uint32_t m = addMaterial(scene, Material{});
     addQuad(scene, {-3, -1, -3}, {3, -1, -3}, {3, -1, 3}, {-3, -1, 3}, m);
     for (int i = 0; i < count; ++i) {
-        SphereLight l;
+        LocalLight l;
         l.center = Vec3(rng.nextFloat(), rng.nextFloat(), rng.nextFloat()) * 4.0f - 2.0f;
         l.radius = i % 7 == 0 ? 0.0f : std::pow(10.0f, -3.0f + 2.5f * rng.nextFloat());
         scene.lights.push_back(l);
@@ -42,7 +42,7 @@ Expected bruteForce(const Scene& scene, const Ray& ray, int skipLight = -1) {
         if (t > 0.0f && std::abs(p.x) <= 3.0f && std::abs(p.z) <= 3.0f) e.t = t;
     }
     for (size_t i = 0; i < scene.lights.size(); ++i) {
-        const SphereLight& l = scene.lights[i];
+        const LocalLight& l = scene.lights[i];
         if (l.isPoint() || int(i) == skipLight) continue;
         float t = intersectSphere(ray.origin, ray.dir, l.center, l.radius);
         if (t < e.t) e = {t, uint32_t(i)};

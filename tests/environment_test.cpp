@@ -139,7 +139,7 @@ TEST(EnvironmentLight, ChosenByPowerBesideASphereLight) {
     Scene s;
     Material plain;
     addQuad(s, Vec3(-1, 0, 1), Vec3(1, 0, 1), Vec3(1, 0, -1), Vec3(-1, 0, -1), addMaterial(s, plain));
-    SphereLight lamp;
+    LocalLight lamp;
     lamp.center = Vec3(0, 1, 0);
     lamp.radius = 0.1f;
     lamp.intensity = Spectrum(1.0f);

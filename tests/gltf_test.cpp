@@ -392,7 +392,7 @@ TEST(Gltf, UnlitIsSeenByCameraRaysOnly) {
         floor.kd = Spectrum(0.5f);
         addQuad(s, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, {-5, 0, -5}, addMaterial(s, floor));
         if (quad) addQuad(s, {0.2f, 1, 0.3f}, {0.8f, 1, 0.3f}, {0.8f, 1, -0.3f}, {0.2f, 1, -0.3f}, addMaterial(s, *quad));
-        SphereLight lamp;
+        LocalLight lamp;
         lamp.center = Vec3(0, 2, 0);
         lamp.intensity = Spectrum(5.0f);
         s.lights.push_back(lamp);
@@ -446,7 +446,7 @@ TEST(Gltf, ShadowRaysInsideAVolumeAreAbsorbed) {
         floor.kd = Spectrum(0.5f);
         addQuad(s, {-0.9f, 0.01f, 0.9f}, {0.9f, 0.01f, 0.9f}, {0.9f, 0.01f, -0.9f}, {-0.9f, 0.01f, -0.9f}, addMaterial(s, floor));
         addBox(s, {-1, 0, -1}, {1, 2, 1}, addMaterial(s, absorbingGlass(color, 1.0f)));
-        SphereLight lamp;
+        LocalLight lamp;
         lamp.center = Vec3(0, 1, 0);
         lamp.intensity = Spectrum(1.0f);
         s.lights.push_back(lamp);

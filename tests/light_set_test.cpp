@@ -11,12 +11,12 @@ namespace {
 
 Scene sceneWithLights() {
     Scene s;
-    SphereLight big;
+    LocalLight big;
     big.center = Vec3(0, 3, 0);
     big.radius = 1.0f;
     big.intensity = Spectrum(2.0f);
     s.lights.push_back(big);
-    SphereLight point;
+    LocalLight point;
     point.center = Vec3(1, 1, 1);
     point.intensity = Spectrum(6.0f);
     s.lights.push_back(point);
@@ -105,7 +105,7 @@ TEST(LightSet, PointLightIsDelta) {
     Scene s = sceneWithLights();
     LightSet lights(s);
     LightSample ls = lights.sample(lights.emitterOfLight(1), Vec3(1, 1, 3), Vec2(0.5f));
-    EXPECT_TRUE(ls.delta);
+    EXPECT_TRUE(ls.isDelta());
     EXPECT_FLOAT_EQ(ls.distance, 2.0f);
     EXPECT_EQ(ls.radiance, Spectrum(6.0f / 4.0f));
     EXPECT_EQ(lights.pdf(lights.emitterOfLight(1), Vec3(0), Vec3(0, 0, 1), 1.0f), 0.0f);

@@ -34,13 +34,13 @@ Scene scatteredEmitters(int triangles) {
                     lamps[t % lamps.size()]);
     }
     for (Vec3 c : {Vec3(1.5f, 1.5f, 1.5f), Vec3(-2, 0, 0)}) {
-        SphereLight l;
+        LocalLight l;
         l.center = c;
         l.radius = 0.1f;
         l.intensity = Spectrum(2.0f);
         s.lights.push_back(l);
     }
-    SphereLight point, spot;
+    LocalLight point, spot;
     point.center = Vec3(0, 2.5f, 0);
     point.intensity = Spectrum(5.0f);
     spot.center = Vec3(0, -2.5f, 1);
@@ -68,10 +68,11 @@ Scene scatteredEmittersUnderTheSky(int triangles) {
 
 // Everything that can light p: for a triangle, some point on it seen from p at a non-zero
 // cosine on both ends; for spheres and points, anything (a spot: inside its outer cone).
-bool canLight(const Scene& s, const LightSet& lights, uint32_t e, const Vec3& p, const Vec3& n, Pcg32& rng) {
+bool canLight(const LightSet& lights, uint32_t e, const Vec3& p, const Vec3& n, Pcg32& rng) {
     const Emitter& em = lights.emitter(e);
-    if (em.kind == Emitter::Kind::Sphere) return true;
-    if (em.kind == Emitter::Kind::Point) return LightSet::punctualFalloff(s.lights[em.index], glm::normalize(em.center - p), 1.0f) > 0.0f;
+    if (std::holds_alternative<SphereEmitter>(em)) return true;
+    if (const PointEmitter* point = std::get_if<PointEmitter>(&em))
+        return point->falloff(glm::normalize(point->position - p), 1.0f) > 0.0f;
     for (int k = 0; k < 64; ++k) {
         LightSample ls = lights.sample(e, p, Vec2(rng.nextFloat(), rng.nextFloat()));
         if (ls.pdf > 0.0f && std::abs(glm::dot(ls.wi, n)) > 1e-3f) return true;
@@ -95,7 +96,7 @@ TEST(LightTree, PmfSumsToOneAndMissesNoEmitter) {
         for (uint32_t e = 0; e < lights.size(); ++e) {
             float pmf = lights.pmf(e, p, n);
             sum += pmf;
-            if (pmf == 0.0f && canLight(s, lights, e, p, n, rng)) ++zeroButLit;
+            if (pmf == 0.0f && canLight(lights, e, p, n, rng)) ++zeroButLit;
         }
         EXPECT_NEAR(sum, 1.0, 1e-4) << "at p = " << p.x << ", " << p.y << ", " << p.z;
         ++points;
@@ -204,7 +205,7 @@ TEST(LightTree, ImagesAgreeWithBsdfSamplingAndPowerChoice) {
     tree.seed = 3, power.seed = 4;
     tree.lightSampling = power.lightSampling = LightSampling::Nee;
     // Point lights and a spot, which only light sampling finds, through both choices.
-    SphereLight point, spot;
+    LocalLight point, spot;
     point.center = Vec3(0.5f, 0.8f, 0.3f), point.intensity = Spectrum(0.5f);
     spot.center = Vec3(-0.5f, 0.9f, 0.0f), spot.intensity = Spectrum(4.0f);
     spot.spotDirection = Vec3(0, -1, 0), spot.cosInner = 0.95f, spot.cosOuter = 0.85f;

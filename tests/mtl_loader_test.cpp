@@ -119,13 +119,13 @@ TEST(Mtl, LightsAndCameras) {
                      "newcamera Cam\n\tcameraposition 0 0 3\n\tcameratarget 0 0 0\n\tcameraup 1 1 0\n"
                      "\tcamerafov 30\n");
     ASSERT_EQ(p.scene.lights.size(), 2u);
-    const SphereLight& key = p.scene.lights[0];
+    const LocalLight& key = p.scene.lights[0];
     EXPECT_EQ(key.name, "Key");
     EXPECT_EQ(key.center, Vec3(-0.7f, 0.7f, -0.7f));
     EXPECT_FLOAT_EQ(key.radius, 0.2f);
     EXPECT_EQ(key.intensity, Spectrum(2.0f, 1.6f, 1.6f)); // intensity times colour
     EXPECT_NEAR(key.radiance().x, 2.0f / (kPi * 0.04f), 1e-4f);
-    const SphereLight& dot = p.scene.lights[1]; // defaults: point light of intensity 1
+    const LocalLight& dot = p.scene.lights[1]; // defaults: point light of intensity 1
     EXPECT_TRUE(dot.isPoint());
     EXPECT_EQ(dot.intensity, Spectrum(1.0f));
     ASSERT_EQ(p.scene.cameras.size(), 1u);

@@ -93,7 +93,7 @@ TEST(Analytic, PointLightOnPlane) {
     m.kd = Spectrum(0.5f, 0.6f, 0.7f);
     uint32_t mat = addMaterial(scene, m);
     addQuad(scene, {-10, 0, 10}, {10, 0, 10}, {10, 0, -10}, {-10, 0, -10}, mat);
-    SphereLight light;
+    LocalLight light;
     light.center = Vec3(0, 2, 0);
     light.radius = 0.0f;
     light.intensity = Spectrum(3.0f, 2.0f, 1.0f);
@@ -139,7 +139,7 @@ TEST_P(TwoSided, BackFacesShadeAsFrontFaces) {
         uint32_t mat = addMaterial(s, tc.material);
         if (back) addQuad(s, {-10, 0, -10}, {10, 0, -10}, {10, 0, 10}, {-10, 0, 10}, mat); // normal -y
         else addQuad(s, {-10, 0, 10}, {10, 0, 10}, {10, 0, -10}, {-10, 0, -10}, mat);      // normal +y
-        SphereLight light;
+        LocalLight light;
         light.center = Vec3(-1, 2, 0);
         light.radius = 0.3f;
         light.intensity = Spectrum(3.0f, 2.0f, 1.0f);
@@ -206,7 +206,7 @@ class SphereLightOnPlane : public ::testing::TestWithParam<LightSampling> {};
 
 TEST_P(SphereLightOnPlane, MatchesPointLightIrradiance) {
     Scene scene = obliquePlane();
-    SphereLight light;
+    LocalLight light;
     light.center = Vec3(0, 2, 0);
     light.radius = 0.5f;
     light.intensity = Spectrum(3.0f, 2.0f, 1.0f);
@@ -228,7 +228,7 @@ TEST_P(ManySphereLightsOnPlane, MatchTheSumOfTheirIrradiances) {
     Scene scene = obliquePlane();
     Spectrum irradiance(0.0f);
     for (int k = 0; k < 12; ++k) {
-        SphereLight light;
+        LocalLight light;
         float phi = 2.0f * kPi * float(k) / 12.0f;
         light.center = Vec3(1.5f * std::cos(phi), 2.0f, 1.5f * std::sin(phi));
         light.radius = 0.3f;
@@ -249,7 +249,7 @@ INSTANTIATE_TEST_SUITE_P(Modes, ManySphereLightsOnPlane,
 // nothing.
 TEST(Analytic, SphereLightSeenDirectly) {
     Scene scene = emptyScene(lookAt({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 10));
-    SphereLight light;
+    LocalLight light;
     light.radius = 0.5f;
     light.intensity = Spectrum(1.0f, 2.0f, 3.0f);
     scene.lights.push_back(light);
@@ -295,7 +295,7 @@ namespace {
 // scaling I with s^2), emission and the environment are radiances and need nothing.
 Scene transformed(Scene scene, float scale, Vec3 translate) {
     for (Vec3& p : scene.positions) p = p * scale + translate;
-    for (SphereLight& l : scene.lights) {
+    for (LocalLight& l : scene.lights) {
         l.center = l.center * scale + translate;
         l.radius *= scale;
         l.intensity *= scale * scale;
@@ -336,7 +336,7 @@ namespace {
 float largestCoordinate(const Scene& s) {
     float m = 0.0f;
     for (const Vec3& p : s.positions) m = std::max(m, maxComponent(glm::abs(p)));
-    for (const SphereLight& l : s.lights) m = std::max(m, maxComponent(glm::abs(l.center)) + l.radius);
+    for (const LocalLight& l : s.lights) m = std::max(m, maxComponent(glm::abs(l.center)) + l.radius);
     for (const Camera& c : s.cameras) m = std::max(m, maxComponent(glm::abs(c.position)));
     return m;
 }
@@ -439,7 +439,7 @@ TEST(RoughLobes, LightSamplingAgreesWithMis) {
     Scene scene = roughMetalStrips();
     // One small light per strip, placed so that its mirror image lies at the strip's centre.
     for (float xc : {-1.5f, -0.5f, 0.5f, 1.5f}) {
-        SphereLight light;
+        LocalLight light;
         light.center = Vec3(xc * 1.6f / 0.6f, 1.0f, 2.5f - 2.5f * 1.6f / 0.6f);
         light.radius = 0.05f;
         light.intensity = Spectrum(20.0f);

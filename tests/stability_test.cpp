@@ -212,7 +212,7 @@ TEST_F(CornellBox, LightInsideAClosedBoxIsHidden) {
     grey.kd = Spectrum(0.5f);
     Vec3 c(0.5f, 0.5f, 0.3f);
     addBox(s, c - Vec3(0.1f), c + Vec3(0.1f), addMaterial(s, grey));
-    SphereLight light;
+    LocalLight light;
     light.center = c;
     light.radius = 0.05f;
     light.intensity = Spectrum(50.0f);
@@ -236,7 +236,7 @@ TEST(TinyLights, TinySphereLightMatchesPointLight) {
             m.kd = Spectrum(0.5f);
             uint32_t mat = addMaterial(scene, m);
             addQuad(scene, {-10, 0, 10}, {10, 0, 10}, {10, 0, -10}, {-10, 0, -10}, mat);
-            SphereLight light;
+            LocalLight light;
             light.center = Vec3(1, 2, 0);
             light.radius = k == 0 ? 0.0f : 1e-5f;
             light.intensity = Spectrum(3.0f);
@@ -263,7 +263,7 @@ TEST(TinyLights, InsideAnEnclosingSphereLight) {
         Material m;
         m.kd = Spectrum(0.6f);
         addQuad(scene, {-20, 0, 20}, {20, 0, 20}, {20, 0, -20}, {-20, 0, -20}, addMaterial(scene, m));
-        SphereLight light;
+        LocalLight light;
         light.radius = 1e3f;
         light.intensity = Spectrum(kPi * 1e6f); // radiance 1
         scene.lights.push_back(light);
@@ -308,7 +308,7 @@ TEST(TinyLights, LightInsideGlassStaysFinite) {
     glass.blend = 1.0f;
     glass.r0 = Spectrum(0.04f);
     addIcosphere(scene, Vec3(0), 0.5f, 3, addMaterial(scene, glass), false, true);
-    SphereLight light;
+    LocalLight light;
     light.radius = 0.1f;
     light.intensity = Spectrum(10.0f);
     scene.lights.push_back(light);

@@ -51,7 +51,7 @@ TEST(TextureRender, CheckerToTheHorizonWithoutMoire) {
 // to it is compared with the same plane whose vertex normal is the mapped normal.
 Scene litPlane() {
     Scene scene = emptyScene(lookAt({0, 3, 0.01f}, {0, 0, 0}, {0, 1, 0}, 40));
-    SphereLight light;
+    LocalLight light;
     light.center = Vec3(2.0f, 1.5f, 1.0f);
     light.radius = 0.1f;
     light.intensity = Spectrum(10.0f);
@@ -127,7 +127,7 @@ TEST(TextureRender, BumpRampIsTiltedNormal) {
 // below it, looking down at the middle of its shadow.
 Scene shadowScene(float coverage, bool withAlphaChannel) {
     Scene scene = emptyScene(lookAt({0, 1, 0}, {0, 0, 0}, {0, 0, -1}, 40));
-    SphereLight light;
+    LocalLight light;
     light.center = Vec3(0, 4, 0);
     light.intensity = Spectrum(16.0f);
     scene.lights.push_back(light);

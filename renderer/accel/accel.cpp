@@ -198,7 +198,7 @@ Accel::Accel(const Scene& scene, int threads, const AccelOptions& options) : imp
         addGeometry(nullptr, kOpaqueGeometry);
     }
     for (size_t i = 0; i < scene.lights.size(); ++i) {
-        const SphereLight& l = scene.lights[i];
+        const LocalLight& l = scene.lights[i];
         if (l.isPoint()) continue;
         impl_->spheres.centerRadius.emplace_back(l.center, l.radius);
         impl_->spheres.light.push_back(uint32_t(i));

@@ -741,7 +741,7 @@ private:
             scene_.directionalLights.push_back(d);
             return;
         }
-        SphereLight l;
+        LocalLight l;
         l.name = "light " + std::to_string(index) + (g.name.empty() ? "" : " " + g.name);
         l.center = Vec3(at);
         l.radius = 0.0f;

@@ -29,7 +29,7 @@ struct PendingMaterial {
 };
 
 struct PendingLight {
-    SphereLight light;
+    LocalLight light;
     Spectrum color{1.0f};
     float intensity = 1.0f;
 };
@@ -278,7 +278,7 @@ void MtlParser::finishBlock() {
     switch (block) {
     case Block::Material: finishMaterial(); break;
     case Block::Light: {
-        SphereLight& l = light.light;
+        LocalLight& l = light.light;
         l.intensity = light.color * light.intensity;
         if (l.source.empty()) l.source = path + ":" + std::to_string(blockLine) + ": ";
         // A sphere's radiance is known here; limits relative to the scene's size are checked once

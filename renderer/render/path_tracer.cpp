@@ -46,14 +46,14 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
     }
     if (hit.onSphere) { // sphere lights emit and reflect nothing
         if (firstHits && path.first.open) {
-            const SphereLight& l = scene_.lights[hit.prim];
+            const LocalLight& l = scene_.lights[hit.prim];
             if (depth == 0) path.first.depth = hit.t;
             path.first.albedo = Spectrum(0.0f);
             path.first.normal = glm::normalize(ray.origin + hit.t * ray.dir - l.center);
             path.first.open = false;
         }
-        uint32_t e = lights_.emitterOfLight(hit.prim);
-        path.L += path.beta * lights_.emitter(e).radiance * hitWeight(path, e, hit.t);
+        const uint32_t e = lights_.emitterOfLight(hit.prim);
+        path.L += path.beta * std::get<SphereEmitter>(lights_.emitter(e)).radiance * hitWeight(path, e, hit.t);
         return false;
     }
 
@@ -108,12 +108,11 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
             Spectrum f = bsdf.evalPdf(woLocal, wiLocal, bsdfPdf);
             if (!isBlack(f) && !isBlack(ls.radiance)) {
                 ++counts.shadow;
-                float w = (ls.delta || settings_.lightSampling != LightSampling::Mis) ? 1.0f
+                float w = (ls.isDelta() || settings_.lightSampling != LightSampling::Mis) ? 1.0f
                                                                                       : powerHeuristic(pmf * ls.pdf, bsdfPdf);
                 ShadowQuery q{Ray{}, 0.0f, -1, slot, path.beta * f * ls.radiance * (w / (pmf * ls.pdf))};
-                const Emitter& em = lights_.emitter(e);
                 bool aimed = true;
-                if (em.kind == Emitter::Kind::Triangle) {
+                if (ls.flags & kEmitterSurface) {
                     // Between the two surfaces' offset points, so that neither self-intersects.
                     Vec3 from = offsetRayOrigin(sp.p, sp.pError, sp.ng, ls.wi);
                     Vec3 to = offsetRayOrigin(ls.point, ls.pointError, ls.normal, -ls.wi);
@@ -125,7 +124,7 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
                 } else {
                     q.ray = spawnRay(sp, ls.wi);
                     q.distance = ls.distance;
-                    if (em.kind == Emitter::Kind::Sphere) q.skipLight = int(em.index);
+                    q.skipLight = ls.skipLight;
                 }
                 if (path.medium != kAir || m.volume) { // a shadow ray through the surface travels in the medium beyond it
                     const bool crosses = glm::dot(ls.wi, sp.ng) * glm::dot(ray.dir, sp.ng) > 0.0f;

@@ -24,7 +24,7 @@ static void triangleBounds(const Scene& scene, Vec3& lo, Vec3& hi) {
 // `pointLights`.
 static void boundsWithLights(const Scene& scene, bool pointLights, Vec3& lo, Vec3& hi) {
     triangleBounds(scene, lo, hi);
-    for (const SphereLight& l : scene.lights)
+    for (const LocalLight& l : scene.lights)
         if (pointLights || !l.isPoint()) {
             lo = glm::min(lo, l.center - Vec3(l.radius));
             hi = glm::max(hi, l.center + Vec3(l.radius));
@@ -144,7 +144,7 @@ static void checkSceneLimits(const Scene& scene) {
         if (!(maxComponent(d.irradiance) <= kMaxRadiance))
             throw LoadError(scene.path + ": directional light \"" + d.name + "\": irradiance " +
                             shortNumber(maxComponent(d.irradiance)) + " is beyond 1e18, where samples overflow float");
-    for (const SphereLight& l : scene.lights) {
+    for (const LocalLight& l : scene.lights) {
         if (!withinCoordinates(l.center))
             throw LoadError(l.source + "light \"" + l.name + "\": it lies beyond 1e12, the largest coordinate pt renders correctly");
         if (l.range > 0.0f && l.range < kMinLightRadiusFraction * size)

@@ -25,10 +25,12 @@ struct Camera {
     float orthoHalfHeight = 0.0f; // > 0: orthographic, seeing this far above and below the axis (glTF ymag)
 };
 
-// The lab's light: a sphere of radius r emitting uniform radiance intensity / (pi r^2), so a
-// facing point at distance d from the centre receives irradiance intensity / d^2.
-// radius == 0 makes it a point light of radiant intensity `intensity` (W/sr).
-struct SphereLight {
+// A light at a place in the scene: the lab's sphere of radius r emitting uniform radiance
+// intensity / (pi r^2), so a facing point at distance d from the centre receives irradiance
+// intensity / d^2; or, with radius 0, a point light of radiant intensity `intensity` (W/sr),
+// which glTF may make a spot and give a range. The light set makes each a SphereEmitter or a
+// PointEmitter (light/emitter.h).
+struct LocalLight {
     std::string name;
     Vec3 center{0.0f};
     float radius = 0.0f;
@@ -140,7 +142,7 @@ struct Scene {
 
     std::vector<Material> materials;
     std::shared_ptr<TextureCache> textures = std::make_shared<TextureCache>(); // shared by copies
-    std::vector<SphereLight> lights;
+    std::vector<LocalLight> lights;
     std::vector<DirectionalLight> directionalLights;
     std::vector<Camera> cameras;
     Environment environment;
