@@ -79,7 +79,8 @@ options (default in brackets):
                          from the shading point; for many emitters); auto takes the
                          tree with 2 or more lights and emissive triangles, or with
                          any beside an environment, sun or directional light [auto]
-  --hemisphere M         Lambert sampling, cosine or uniform (a diagnostic) [cosine]
+  --hemisphere M         Lambert sampling, cosine or uniform (a diagnostic; the lab model's
+                         Lambert lobe only: glTF's BRDF keeps the cosine, with a warning) [cosine]
   --sampler S            sample values: sobol (Owen-scrambled Sobol points) or random
                          (independent) [sobol]
   --aov LIST             extra EXR layers, comma-separated [none]:
@@ -665,6 +666,16 @@ int renderCommand(int argc, char** argv) {
                          "horizon and the sun's disk is hidden");
     }
     addDefaultLighting(scene, warnings);
+    if (args.settings.hemisphere == HemisphereSampling::Uniform) {
+        // Only the lab model's Lambert lobe has the choice; glTF's BRDF samples its diffuse lobe
+        // by the cosine always (its transmitting materials go through the lab model and take it).
+        size_t ignoring = 0;
+        for (const Material& m : scene.materials) ignoring += m.model == MaterialModel::MetalRough && !(m.transparency > 0.0f);
+        if (ignoring > 0)
+            warnings.add("--hemisphere uniform: " + std::to_string(ignoring) + " of the scene's " +
+                         std::to_string(scene.materials.size()) + " materials (glTF metallic-roughness) ignore it and "
+                         "sample their diffuse lobe by the cosine");
+    }
     double loadSeconds = secondsSince(t0);
 
     if (args.threads > hardware)

@@ -24,6 +24,9 @@ expect 2 "option --res: expected WIDTHxHEIGHT" "$pt" render "$scene" --res 512
 expect 2 "unknown extension \".tiff\"" "$pt" render "$scene" -o "$tmp/out.tiff"
 expect 2 "does not exist" "$pt" render "$scene" -o "$tmp/no/such/dir/out.exr"
 expect 2 "--aov needs an .exr output" "$pt" render "$scene" --aov variance -o "$tmp/out.png"
+# An option a material model ignores says so (issue 37): glTF's BRDF keeps cosine sampling.
+expect 0 "--hemisphere uniform: 6 of the scene's 6 materials (glTF metallic-roughness) ignore it" \
+  "$pt" render "$root/scenes/gltf/spheres.gltf" --hemisphere uniform --res 16x16 -spp 1 -o "$tmp/hemisphere.exr"
 expect 2 "no such camera" "$pt" render "$scene" --camera Nowhere -o "$tmp/out.exr"
 # Time budgets and adaptive sampling: each bad value a usage error, with nothing written.
 expect 2 "option --time: expected a time in seconds above 0, got 0" "$pt" render "$scene" --time 0 -o "$tmp/out.exr"

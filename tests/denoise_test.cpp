@@ -24,20 +24,8 @@ Scene glassInFrontOfChecker() {
     wall.kd = Spectrum(0.8f);
     wall.kdMap = mapOf(scene.textures->add(checkerTexture()));
     addUvQuad(scene, {-3, -3, -1}, {3, -3, -1}, {3, 3, -1}, {-3, 3, -1}, addMaterial(scene, wall), Vec2(0.0f), Vec2(4.5f));
-    Material glass;
-    glass.kd = Spectrum(0.0f);
-    glass.blend = 1.0f;
-    glass.r0 = Spectrum(0.04f);
-    glass.transparency = 1.0f;
-    glass.eta = 1.5f;
-    addBox(scene, {-2, -2, 0}, {0, 2, 0.3f}, addMaterial(scene, glass));
+    addBox(scene, {-2, -2, 0}, {0, 2, 0.3f}, addMaterial(scene, labMaterial("glass")));
     return scene;
-}
-
-Material lambert(Spectrum kd) {
-    Material m;
-    m.kd = kd;
-    return m;
 }
 
 struct Features {

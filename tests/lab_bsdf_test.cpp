@@ -1,48 +1,12 @@
 #include "material/lab_bsdf.h"
 #include "sampling/rng.h"
 #include "tests/chi_square.h"
+#include "tests/scene_builders.h"
 
 #include <gtest/gtest.h>
 
 namespace pt::test {
 namespace {
-
-Material lambert(Spectrum kd) {
-    Material m;
-    m.kd = kd;
-    return m;
-}
-
-// The lab's materials, as the MTL loader builds them.
-std::vector<std::pair<std::string, Material>> labMaterials() {
-    std::vector<std::pair<std::string, Material>> out;
-    out.emplace_back("lambert", lambert(Spectrum(0.5f, 0.7f, 0.9f)));
-    Material mirror;
-    mirror.kd = Spectrum(0.0f);
-    mirror.blend = 1.0f;
-    mirror.r0 = Spectrum(1.0f);
-    mirror.ks = Spectrum(0.9f);
-    out.emplace_back("mirror", mirror);
-    Material glass;
-    glass.blend = 1.0f;
-    glass.r0 = Spectrum(0.04f);
-    glass.transparency = 1.0f;
-    glass.eta = 1.5f;
-    out.emplace_back("glass", glass);
-    Material plastic; // Fresnel blend of a mirror over Lambert (cornellbottle2's walls)
-    plastic.kd = Spectrum(0.75f, 0.3f, 0.3f);
-    plastic.blend = 1.0f;
-    plastic.r0 = Spectrum(0.1f);
-    out.emplace_back("plastic", plastic);
-    Material mixed; // every lobe at once, linear blend w = 0.5
-    mixed.kd = Spectrum(0.6f);
-    mixed.blend = 0.5f;
-    mixed.r0 = Spectrum(0.2f, 0.3f, 0.4f);
-    mixed.transparency = 0.3f;
-    mixed.eta = 1.33f;
-    out.emplace_back("mixed", mixed);
-    return out;
-}
 
 // The same materials with rough Spec and Refr lobes.
 std::vector<std::pair<std::string, Material>> roughMaterials(const std::vector<float>& alphas) {
@@ -112,7 +76,7 @@ TEST(LabBsdf, DeltaLobeWeights) {
     BsdfSample s;
     Vec3 wo = directionAt(0.8f);
     ASSERT_TRUE(outside.sample(wo, 0.99f, Vec2(0.5f), s)); // refraction (mirror prob is small)
-    EXPECT_TRUE(s.delta);
+    EXPECT_TRUE(s.isDelta());
     EXPECT_LT(s.wi.z, 0.0f);
     float F = 0.04f + 0.96f * std::pow(0.2f, 5.0f);
     EXPECT_NEAR(s.weight.x * outside.pRefract, (1 - F) / (1.5f * 1.5f), 1e-5f);
@@ -145,7 +109,7 @@ TEST(LabBsdf, SamplingMatchesPdfAndEval) {
                 auto r = chiSquareDirections(
                     [&](Vec2 u, Vec3& wi) {
                         BsdfSample s;
-                        if (!b.sample(wo, rng.nextFloat(), u, s) || s.delta) return false;
+                        if (!b.sample(wo, rng.nextFloat(), u, s) || s.isDelta()) return false;
                         float pdf = b.pdf(wo, s.wi);
                         Spectrum f = b.eval(wo, s.wi);
                         if (std::abs(pdf - s.pdf) > 1e-4f * pdf || glm::length(s.weight - f / pdf) > 1e-4f * glm::length(s.weight))
@@ -180,7 +144,7 @@ TEST(LabBsdf, RoughLobesSampleTheirPdf) {
                     [&](float u1, Vec2 u2, int& side, Vec3& half) {
                         BsdfSample s;
                         if (!b.sample(wo, u1, u2, s)) return false;
-                        EXPECT_FALSE(s.delta) << name;
+                        EXPECT_FALSE(s.isDelta()) << name;
                         float pdf = b.pdf(wo, s.wi);
                         Spectrum f = b.eval(wo, s.wi);
                         if (!(std::abs(pdf - s.pdf) <= 1e-4f * pdf) ||
@@ -225,7 +189,7 @@ TEST(LabBsdf, LobeChoiceMatchesProbabilities) {
             for (int i = 0; i < n; ++i) {
                 BsdfSample s;
                 ASSERT_TRUE(b.sample(wo, rng.nextFloat(), Vec2(rng.nextFloat(), rng.nextFloat()), s)) << name;
-                int lobe = !s.delta ? 2 : s.wi.z * wo.z < 0.0f ? 1 : 0;
+                int lobe = !s.isDelta() ? 2 : s.wi.z * wo.z < 0.0f ? 1 : 0;
                 counts[lobe] += 1;
             }
             double expected[3] = {b.pMirror * double(n), b.pRefract * double(n), b.pDiffuse * double(n)};
@@ -382,7 +346,7 @@ TEST(LabBsdf, ThinWallPassesUnbent) {
         LabBsdf b = LabBsdf::make(p, wo.z);
         BsdfSample s;
         ASSERT_TRUE(b.sample(wo, 0.999f, Vec2(0.5f), s));
-        EXPECT_TRUE(s.delta);
+        EXPECT_TRUE(s.isDelta());
         EXPECT_EQ(s.wi, -wo);
         EXPECT_EQ(s.radianceScale, 1.0f);
         float f = 0.04f + 0.96f * std::pow(1.0f - std::abs(cosO), 5.0f);

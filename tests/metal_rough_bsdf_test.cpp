@@ -152,10 +152,10 @@ TEST(MetalRoughBsdf, SmoothMetalIsAFresnelMirror) {
     const Spectrum base(0.9f, 0.6f, 0.3f);
     Vec3 wo = direction(0.5f, 1.0f);
     MetalRoughBsdf b = MetalRoughBsdf::make(base, 1.0f, 0.0f, 1.5f, wo.z);
-    EXPECT_FALSE(b.hasNonDelta());
+    EXPECT_FALSE(b.lobes() & kLobeNonSpecular);
     BsdfSample s;
     ASSERT_TRUE(b.sample(wo, 0.5f, Vec2(0.3f, 0.7f), s));
-    EXPECT_TRUE(s.delta);
+    EXPECT_TRUE(s.isDelta());
     EXPECT_NEAR(s.wi.x, -wo.x, 1e-6f);
     EXPECT_NEAR(s.wi.z, wo.z, 1e-6f);
     float w = std::pow(0.5f, 5.0f);
@@ -228,7 +228,7 @@ TEST(MetalRoughBsdf, SmoothClearcoatIsFresnelOverTheBase) {
         // Over black (base colour 0, no specular): the coat alone reflects Fc, all of it the delta mirror.
         MetalRoughBsdf black = MetalRoughBsdf::make(coated(Spectrum(0.0f), 0.0f, 0.0f), wo);
         EXPECT_NEAR(albedo(black, wo, 1000), fc, 1e-6) << "cos " << cosO;
-        EXPECT_FALSE(black.hasNonDelta());
+        EXPECT_FALSE(black.lobes() & kLobeNonSpecular);
         // Over white Lambert (specularFactor 0): Fc + (1 - Fc) * 1 = 1.
         MetalRoughBsdf white = MetalRoughBsdf::make(coated(Spectrum(1.0f), 0.0f, 0.0f), wo);
         EXPECT_NEAR(albedo(white, wo), 1.0, 3e-3) << "cos " << cosO;

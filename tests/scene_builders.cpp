@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 namespace pt::test {
 
@@ -94,6 +95,48 @@ void addUvQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material, 
         scene.triNormals.emplace_back(n);
     }
     if (!scene.triNormals.empty()) scene.triNormals.resize(scene.triangleCount(), glm::ivec3(-1));
+}
+
+Material lambert(Spectrum kd) {
+    Material m;
+    m.kd = kd;
+    return m;
+}
+
+std::vector<std::pair<std::string, Material>> labMaterials() {
+    std::vector<std::pair<std::string, Material>> out;
+    out.emplace_back("lambert", lambert(Spectrum(0.5f, 0.7f, 0.9f)));
+    Material mirror;
+    mirror.kd = Spectrum(0.0f);
+    mirror.blend = 1.0f;
+    mirror.r0 = Spectrum(1.0f);
+    mirror.ks = Spectrum(0.9f);
+    out.emplace_back("mirror", mirror);
+    Material glass;
+    glass.blend = 1.0f;
+    glass.r0 = Spectrum(0.04f);
+    glass.transparency = 1.0f;
+    glass.eta = 1.5f;
+    out.emplace_back("glass", glass);
+    Material plastic; // Fresnel blend of a mirror over Lambert (cornellbottle2's walls)
+    plastic.kd = Spectrum(0.75f, 0.3f, 0.3f);
+    plastic.blend = 1.0f;
+    plastic.r0 = Spectrum(0.1f);
+    out.emplace_back("plastic", plastic);
+    Material mixed; // every lobe at once, linear blend w = 0.5
+    mixed.kd = Spectrum(0.6f);
+    mixed.blend = 0.5f;
+    mixed.r0 = Spectrum(0.2f, 0.3f, 0.4f);
+    mixed.transparency = 0.3f;
+    mixed.eta = 1.33f;
+    out.emplace_back("mixed", mixed);
+    return out;
+}
+
+Material labMaterial(const std::string& name) {
+    for (auto& [n, m] : labMaterials())
+        if (n == name) return m;
+    throw std::invalid_argument("no lab material " + name);
 }
 
 } // namespace pt::test

@@ -4,6 +4,10 @@
 
 #include "scene/scene.h"
 
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace pt::test {
 
 uint32_t addMaterial(Scene& scene, const Material& m);
@@ -20,5 +24,12 @@ void addUvQuad(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, uint32_t material, 
                Vec3 normal = Vec3(0.0f));
 // An axis-aligned box of six quads, normals facing out.
 void addBox(Scene& scene, Vec3 lo, Vec3 hi, uint32_t material);
+
+// A Lambert material of reflectance kd.
+Material lambert(Spectrum kd);
+// The lab's materials, as the MTL loader builds them: lambert, mirror, glass (eta 1.5), plastic
+// (a Fresnel blend of a mirror over Lambert) and mixed (every lobe at once), by name.
+std::vector<std::pair<std::string, Material>> labMaterials();
+Material labMaterial(const std::string& name);
 
 } // namespace pt::test

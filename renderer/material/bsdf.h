@@ -31,25 +31,24 @@ struct Bsdf {
         metalRough.init(p, wo);
     }
 
-    bool hasNonDelta() const { return model == Model::Lab ? lab.hasNonDelta() : metalRough.hasNonDelta(); }
-    bool isBlack() const { return model == Model::Lab ? lab.isBlack() : metalRough.isBlack(); }
-    Spectrum albedo() const {
-        return model == Model::Lab ? lab.mirror + lab.refract + lab.diffuse : metalRough.albedo();
+    // One dispatch on the model for every method below: f(lab) or f(metalRough).
+    template <typename F>
+    decltype(auto) visit(F&& f) const {
+        return model == Model::Lab ? f(lab) : f(metalRough);
     }
+
+    // The BsdfLobe flags of the lobes with weight at this hit's wo; 0: the surface is black.
+    uint8_t lobes() const { return visit([](const auto& b) { return b.lobes(); }); }
+    bool hasNonDelta() const { return lobes() & kLobeNonSpecular; }
+    bool isBlack() const { return lobes() == 0; }
+    // The surface's reflectance at wo, for the albedo AOV and the denoiser (see each model's albedo()).
+    Spectrum albedo() const { return visit([](const auto& b) { return b.albedo(); }); }
+    // f |cos theta_i| and the density with which sample() gives wi, in one pass.
     Spectrum evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) const {
-        return model == Model::Lab ? lab.evalPdf(wo, wi, pdf) : metalRough.evalPdf(wo, wi, pdf);
-    }
-    Spectrum eval(const Vec3& wo, const Vec3& wi) const {
-        float unused;
-        return evalPdf(wo, wi, unused);
-    }
-    float pdf(const Vec3& wo, const Vec3& wi) const {
-        float p;
-        evalPdf(wo, wi, p);
-        return p;
+        return visit([&](const auto& b) { return b.evalPdf(wo, wi, pdf); });
     }
     bool sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
-        return model == Model::Lab ? lab.sample(wo, u1, u2, out) : metalRough.sample(wo, u1, u2, out);
+        return visit([&](const auto& b) { return b.sample(wo, u1, u2, out); });
     }
 };
 

@@ -112,7 +112,7 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
         }
         out.wi = i * s.sign;
         out.radianceScale = scale;
-        out.delta = false;
+        out.lobe = kLobeGlossy | (out.wi.z * wo.z > 0.0f ? kLobeReflection : kLobeTransmission);
         // The weight of the whole mixture, f / pdf over every non-delta lobe: lower variance than
         // the chosen lobe's own ratio (its weight times G1(wi, m) times the radiance scaling), and
         // what MIS's pdf describes.
@@ -125,7 +125,7 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
         out.wi = Vec3(-wo.x, -wo.y, wo.z);
         out.weight = mirror / pMirror;
         out.pdf = 0.0f;
-        out.delta = true;
+        out.lobe = kLobeReflection | kLobeSpecular;
         return true;
     }
     if (chooseRefract) {
@@ -145,7 +145,7 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
             out.weight = refract / pRefract;
         }
         out.pdf = 0.0f;
-        out.delta = true;
+        out.lobe = kLobeSpecular | (out.wi.z * wo.z > 0.0f ? kLobeReflection : kLobeTransmission);
         return true;
     }
     if (pDiffuse == 0.0f) return false;
@@ -160,7 +160,7 @@ bool LabBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
     if (wi.z == 0.0f) return false;
     wi.z *= side;
     out.wi = wi;
-    out.delta = false;
+    out.lobe = kLobeReflection | kLobeDiffuse;
     Spectrum f = evalPdf(wo, wi, out.pdf);
     if (rough()) { // other non-delta lobes overlap the diffuse one: weigh the whole mixture
         if (!(out.pdf > 0.0f)) return false;

@@ -33,23 +33,11 @@
 #pragma once
 
 #include "core/math.h"
+#include "material/bsdf_sample.h"
 #include "material/microfacet.h"
 #include "scene/scene.h"
 
 namespace pt {
-
-enum class HemisphereSampling { Cosine, Uniform };
-
-// A sampled direction. A delta lobe's sample has pdf 0 and carries its selection probability in
-// its weight only: once glossy and delta lobes mix in one material, that probability is not a
-// density, and using it as one (in MIS) would be wrong.
-struct BsdfSample {
-    Vec3 wi;
-    Spectrum weight; // f * |cos theta_i| / pdf, or the lobe weight over its probability for delta lobes
-    float pdf = 0.0f; // solid-angle density of wi over all non-delta lobes, lobe choice included; 0 for delta
-    bool delta = false;
-    float radianceScale = 1.0f; // (eta_o / eta_i)^2 included in weight when the path refracted
-};
 
 // The lab tree's parameters at one hit, after textures and the Pm rule (evaluate_material.h).
 struct LabParameters {
@@ -100,8 +88,14 @@ struct LabBsdf {
         return make(labParameters(m, kd), cosThetaO, hemisphere);
     }
 
-    bool hasNonDelta() const { return pDiffuse > 0.0f || (rough() && pMirror + pRefract > 0.0f); }
-    bool isBlack() const { return pMirror + pRefract + pDiffuse == 0.0f; }
+    // The BsdfLobe flags of the lobes with weight at this wo (0: black).
+    uint8_t lobes() const {
+        const uint8_t shape = rough() ? kLobeGlossy : kLobeSpecular;
+        return (pMirror > 0.0f ? kLobeReflection | shape : 0) | (pRefract > 0.0f ? kLobeTransmission | shape : 0) |
+               (pDiffuse > 0.0f ? kLobeReflection | kLobeDiffuse : 0);
+    }
+    // Reflectance at wo for the albedo AOV: the three lobe weights, each with its colour.
+    Spectrum albedo() const { return mirror + refract + diffuse; }
 
     // eval() and pdf() of the same pair of directions, in one pass.
     Spectrum evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) const;

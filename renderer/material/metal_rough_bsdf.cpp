@@ -118,7 +118,7 @@ bool MetalRoughBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) 
             if (out.wi.z <= 0.0f) return false;
             out.weight = Spectrum(coat / pCoat);
             out.pdf = 0.0f;
-            out.delta = true;
+            out.lobe = kLobeReflection | kLobeSpecular;
             return true;
         }
         const Frame frame(coatNormal);
@@ -137,7 +137,7 @@ bool MetalRoughBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) 
             out.wi = Vec3(-wo.x, -wo.y, wo.z);
             out.weight = lobe * ((1.0f - coat) * sheenScaleO / pSpecular); // wi.z = wo.z: both scalings equal
             out.pdf = 0.0f;
-            out.delta = true;
+            out.lobe = kLobeReflection | kLobeSpecular;
             return true;
         }
         Vec3 m = sampleVisibleNormal(wo, alpha, u2);
@@ -153,7 +153,7 @@ bool MetalRoughBsdf::sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) 
     if (!(pdf > 0.0f)) return false;
     out.weight = f / pdf;
     out.pdf = pdf;
-    out.delta = false;
+    out.lobe = kLobeReflection | (u1 < pCoat + pSpecular + pSheen ? kLobeGlossy : kLobeDiffuse);
     return true;
 }
 

@@ -34,7 +34,8 @@
 // that eval / pdf is the sample's weight and MIS sees the true density.
 #pragma once
 
-#include "material/lab_bsdf.h"
+#include "material/bsdf_sample.h"
+#include "material/microfacet.h"
 
 namespace pt {
 
@@ -81,8 +82,11 @@ struct MetalRoughBsdf {
 
     bool smooth() const { return alpha <= 0.0f; }
     bool coatSmooth() const { return coatAlpha <= 0.0f; }
-    bool hasNonDelta() const {
-        return pDiffuse > 0.0f || pSheen > 0.0f || (!smooth() && pSpecular > 0.0f) || (!coatSmooth() && pCoat > 0.0f);
+    // The BsdfLobe flags of the lobes with weight at this wo (0: black).
+    uint8_t lobes() const {
+        return (pSpecular > 0.0f ? kLobeReflection | (smooth() ? kLobeSpecular : kLobeGlossy) : 0) |
+               (pCoat > 0.0f ? kLobeReflection | (coatSmooth() ? kLobeSpecular : kLobeGlossy) : 0) |
+               (pSheen > 0.0f ? kLobeReflection | kLobeGlossy : 0) | (pDiffuse > 0.0f ? kLobeReflection | kLobeDiffuse : 0);
     }
     bool isBlack() const { return pSpecular + pDiffuse + pCoat + pSheen == 0.0f; }
     // The colour of the surface, for the albedo AOV: diffuse for dielectrics, F0 for metals.

@@ -148,7 +148,7 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
     // Through a mirror or smooth glass: what it passes tints the features of what lies beyond
     // (without refraction's radiance scaling, which is no colour).
     if (firstHits && path.first.open) path.first.tint *= bs.weight / bs.radianceScale;
-    path.deltaBefore = bs.delta;
+    path.deltaBefore = bs.isDelta();
     path.prevPdf = bs.pdf;
     path.prevP = sp.p;
     path.prevN = frame.n;
