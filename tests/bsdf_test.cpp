@@ -87,5 +87,31 @@ TEST(Bsdf, SamplesAreOfTheLobesItDeclares) {
     EXPECT_GT(samples, 100000);
 }
 
+// Albedo means one thing in both models: a surface the two can both describe has one albedo at
+// every angle. A lab Fresnel blend of a mirror over Lambert (R0 0.04) is glTF's dielectric of
+// ior 1.5; a lab mirror with R0 = c is glTF's metal of base colour c.
+TEST(Bsdf, AlbedoMeansOneThingInBothModels) {
+    const Spectrum color(0.7f, 0.4f, 0.1f);
+    for (float cosO : {1.0f, 0.7f, 0.3f, 0.05f}) {
+        const Vec3 wo = directionAt(cosO, 0.4f);
+        Material plastic;
+        plastic.kd = color;
+        plastic.blend = 1.0f;
+        plastic.r0 = Spectrum(0.04f);
+        Material mirror;
+        mirror.kd = Spectrum(0.0f);
+        mirror.blend = 1.0f;
+        mirror.r0 = color;
+        for (auto [lab, metallic] : {std::pair{plastic, 0.0f}, std::pair{mirror, 1.0f}}) {
+            Bsdf a, b;
+            a.initLab(labParameters(lab, lab.kd), wo.z, HemisphereSampling::Cosine);
+            b.initMetalRough(MetalRoughParameters{color, metallic, 0.0f, 1.5f}, wo);
+            const Spectrum la = a.albedo(wo), gb = b.albedo(wo);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(la[c], gb[c], 1e-5f) << "metallic " << metallic << " cos " << cosO << " channel " << c;
+        }
+    }
+}
+
 } // namespace
 } // namespace pt::test

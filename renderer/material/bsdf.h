@@ -41,8 +41,9 @@ struct Bsdf {
     uint8_t lobes() const { return visit([](const auto& b) { return b.lobes(); }); }
     bool hasNonDelta() const { return lobes() & kLobeNonSpecular; }
     bool isBlack() const { return lobes() == 0; }
-    // The surface's reflectance at wo, for the albedo AOV and the denoiser (see each model's albedo()).
-    Spectrum albedo() const { return visit([](const auto& b) { return b.albedo(); }); }
+    // The surface's reflectance at wo, for the albedo AOV and the denoiser: in every model each
+    // lobe's colour times its share at wo (Fresnel at the normal), summed.
+    Spectrum albedo(const Vec3& wo) const { return visit([&](const auto& b) { return b.albedo(wo); }); }
     // f |cos theta_i| and the density with which sample() gives wi, in one pass.
     Spectrum evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) const {
         return visit([&](const auto& b) { return b.evalPdf(wo, wi, pdf); });

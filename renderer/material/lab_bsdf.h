@@ -95,7 +95,7 @@ struct LabBsdf {
                (pDiffuse > 0.0f ? kLobeReflection | kLobeDiffuse : 0);
     }
     // Reflectance at wo for the albedo AOV: the three lobe weights, each with its colour.
-    Spectrum albedo() const { return mirror + refract + diffuse; }
+    Spectrum albedo(const Vec3&) const { return mirror + refract + diffuse; }
 
     // eval() and pdf() of the same pair of directions, in one pass.
     Spectrum evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) const;

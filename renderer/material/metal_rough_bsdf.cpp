@@ -71,6 +71,18 @@ void MetalRoughBsdf::init(const MetalRoughParameters& p, const Vec3& wo) {
     }
 }
 
+Spectrum MetalRoughBsdf::albedo(const Vec3& wo) const {
+    if (isBlack()) return Spectrum(0.0f);
+    const float w = schlickWeight(wo.z);
+    const Spectrum fd = f0 + (Spectrum(1.0f) - f0) * w;
+    const Spectrum fm = baseColor + (Spectrum(1.0f) - baseColor) * w;
+    const float base = (1.0f - coat) * sheenScaleO;
+    Spectrum a = base * ((1.0f - metallic) * specular * fd + metallic * fm) +
+                 base * (1.0f - metallic) * (1.0f - specular * maxComponent(fd)) * baseColor + Spectrum(coat);
+    if (sheenAlpha > 0.0f) a += (1.0f - coat) * sheenColor * sheenAlbedo(wo.z, sheenAlpha);
+    return a;
+}
+
 Spectrum MetalRoughBsdf::evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) const {
     pdf = 0.0f;
     if (wo.z <= 0.0f || wi.z <= 0.0f || isBlack()) return Spectrum(0.0f);

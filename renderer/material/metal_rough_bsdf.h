@@ -89,8 +89,9 @@ struct MetalRoughBsdf {
                (pSheen > 0.0f ? kLobeReflection | kLobeGlossy : 0) | (pDiffuse > 0.0f ? kLobeReflection | kLobeDiffuse : 0);
     }
     bool isBlack() const { return pSpecular + pDiffuse + pCoat + pSheen == 0.0f; }
-    // The colour of the surface, for the albedo AOV: diffuse for dielectrics, F0 for metals.
-    Spectrum albedo() const { return baseColor; }
+    // Reflectance at wo for the albedo AOV: each lobe's colour times its share at wo, with
+    // Fresnel at the normal (the weights that choose a lobe, per channel), as the lab model's.
+    Spectrum albedo(const Vec3& wo) const;
 
     Spectrum evalPdf(const Vec3& wo, const Vec3& wi, float& pdf) const;
     Spectrum eval(const Vec3& wo, const Vec3& wi) const {

@@ -86,7 +86,7 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
     const Vec3 ng = shading.turned ? -sp.ng : sp.ng;
     if (firstHits && path.first.open) { // final unless the surface is a mirror or smooth glass
         if (depth == 0) path.first.depth = hit.t;
-        path.first.albedo = path.first.tint * bsdf.albedo();
+        path.first.albedo = path.first.tint * bsdf.albedo(woLocal);
         path.first.normal = woLocal.z >= 0.0f ? frame.n : -frame.n;
         path.first.open = !bsdf.hasNonDelta() && !bsdf.isBlack();
     }
