@@ -29,6 +29,117 @@ float PathTracer::hitWeight(const PathState<Sampler>& path, uint32_t emitter, fl
     return powerHeuristic(path.prevPdf, lightPdf);
 }
 
+// Shade stage, step 1: the ray left the scene. What the environment and the sun's disk send
+// along it, weighed against next-event estimation's chance of having sampled them.
+template <typename Sampler>
+void PathTracer::escape(PathState<Sampler>& path, bool firstHits) const {
+    const Ray& ray = path.ray;
+    // Seen through a mirror or glass, the sky is what a camera ray that misses sees: no surface.
+    if (firstHits && path.first.open) path.first.albedo = Spectrum(0.0f), path.first.normal = Vec3(0.0f);
+    const Environment& env = scene_.environment;
+    path.L += path.beta * env.radiance(ray.dir) * hitWeight(path, lights_.environmentEmitter(), kInf);
+    if (env.sun && env.sun->covers(ray.dir)) path.L += path.beta * env.sun->radiance * hitWeight(path, lights_.sunEmitter(), kInf);
+}
+
+// Shade stage, step 2 for a sphere light: it emits and reflects nothing, so the path ends here.
+template <typename Sampler>
+void PathTracer::hitSphereLight(PathState<Sampler>& path, const Hit& hit, bool firstHits) const {
+    const Ray& ray = path.ray;
+    if (firstHits && path.first.open) {
+        const LocalLight& l = scene_.lights[hit.prim];
+        if (path.depth == 0) path.first.depth = hit.t;
+        path.first.albedo = Spectrum(0.0f);
+        path.first.normal = glm::normalize(ray.origin + hit.t * ray.dir - l.center);
+        path.first.open = false;
+    }
+    const uint32_t e = lights_.emitterOfLight(hit.prim);
+    path.L += path.beta * std::get<SphereEmitter>(lights_.emitter(e)).radiance * hitWeight(path, e, hit.t);
+}
+
+// Shade stage, step 3: next-event estimation at a surface point. One emitter, one point on it;
+// the shadow ray goes to the shadow stage with what it adds if nothing blocks it.
+template <typename Sampler>
+void PathTracer::sampleLight(const PathState<Sampler>& path, const SurfacePoint& sp, const Material& m,
+                             const ShadingPoint& shading, const Vec3& ng, const VertexDraws& u, uint32_t slot,
+                             std::vector<ShadowQuery>& shadows, RayCounts& counts) const {
+    const Frame& frame = shading.frame;
+    const Bsdf& bsdf = shading.bsdf;
+    const float uLight = lights_.size() > 1 ? u.lightChoice : 0.0f;
+    float pmf;
+    uint32_t e = lights_.choose(uLight, sp.p, frame.n, pmf);
+    LightSample ls = pmf > 0.0f ? lights_.sample(e, sp.p, u.lightPoint) : LightSample{};
+    Vec3 wiLocal = frame.toLocal(ls.wi);
+    // The shading and the geometric normal must agree on the side wi leaves from, or the
+    // shadow ray would start on the wrong side of the surface.
+    if (!(ls.pdf > 0.0f && glm::dot(ls.wi, ng) * wiLocal.z > 0.0f)) return;
+    float bsdfPdf; // for MIS; evaluated with f in one pass
+    Spectrum f = bsdf.evalPdf(shading.wo, wiLocal, bsdfPdf);
+    if (isBlack(f) || isBlack(ls.radiance)) return;
+    ++counts.shadow;
+    float w = (ls.isDelta() || settings_.lightSampling != LightSampling::Mis) ? 1.0f : powerHeuristic(pmf * ls.pdf, bsdfPdf);
+    ShadowQuery q{Ray{}, 0.0f, -1, slot, path.beta * f * ls.radiance * (w / (pmf * ls.pdf))};
+    bool aimed = true;
+    if (ls.flags & kEmitterSurface) {
+        // Between the two surfaces' offset points, so that neither self-intersects.
+        Vec3 from = offsetRayOrigin(sp.p, sp.pError, sp.ng, ls.wi);
+        Vec3 to = offsetRayOrigin(ls.point, ls.pointError, ls.normal, -ls.wi);
+        Vec3 d = to - from;
+        float len = glm::length(d);
+        aimed = len > 0.0f;
+        q.ray = Ray{from, d / len};
+        q.distance = len;
+    } else {
+        q.ray = spawnRay(sp, ls.wi);
+        q.distance = ls.distance;
+        q.skipLight = ls.skipLight;
+    }
+    if (path.medium != kAir || m.volume) { // a shadow ray through the surface travels in the medium beyond it
+        const bool crosses = glm::dot(ls.wi, sp.ng) * glm::dot(path.ray.dir, sp.ng) > 0.0f;
+        const uint32_t medium = crosses ? mediumAfterCrossing(path.medium, sp.material, m, ls.wi, sp.ng) : path.medium;
+        if (medium != kAir) q.contribution *= transmittance(scene_.materials[medium].attenuation, q.distance);
+    }
+    if (aimed) shadows.push_back(q);
+}
+
+// Shade stage, step 4: sample the BSDF for the path's next direction, then Russian roulette.
+// Returns whether the path goes on (its ray set to the next).
+template <typename Sampler>
+bool PathTracer::continuePath(PathState<Sampler>& path, const SurfacePoint& sp, const Material& m,
+                              const ShadingPoint& shading, const Vec3& ng, const VertexDraws& u, bool firstHits,
+                              RayCounts& counts) const {
+    const Frame& frame = shading.frame;
+    const Ray& ray = path.ray;
+    BsdfSample bs;
+    if (!shading.bsdf.sample(shading.wo, u.lobe, u.direction, bs)) return false;
+    Vec3 wi = frame.toWorld(bs.wi);
+    if ((glm::dot(wi, ng) > 0.0f) != (bs.wi.z > 0.0f)) return false; // see sampleLight's side note
+    if (m.volume && glm::dot(wi, sp.ng) * glm::dot(ray.dir, sp.ng) > 0.0f) // crossed a volume's surface
+        path.medium = mediumAfterCrossing(path.medium, sp.material, m, wi, sp.ng);
+    path.beta *= bs.weight;
+    path.etaScale *= bs.radianceScale;
+    // Through a mirror or smooth glass: what it passes tints the features of what lies beyond
+    // (without refraction's radiance scaling, which is no colour).
+    if (firstHits && path.first.open) path.first.tint *= bs.weight / bs.radianceScale;
+    path.deltaBefore = bs.isDelta();
+    path.prevPdf = bs.pdf;
+    path.prevP = sp.p;
+    path.prevN = frame.n;
+
+    // Russian roulette on the throughput without the refraction scaling, so paths inside glass
+    // are not cut for carrying radiance that is only compressed.
+    if (path.depth + 1 >= kRouletteDepth) {
+        float q = std::min(1.0f, maxComponent(path.beta / path.etaScale));
+        if (u.roulette >= q) return false;
+        path.beta /= q;
+    }
+    if (isBlack(path.beta)) return false;
+    path.ray = spawnRay(sp, wi);
+    path.depth = path.depth + 1;
+    ++counts.continuation;
+    return true;
+}
+
+// The shade stage for one path at its hit: the steps above, in order.
 template <typename Sampler>
 bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDraws& u, uint32_t slot, bool firstHits,
                        std::vector<ShadowQuery>& shadows, RayCounts& counts) const {
@@ -37,26 +148,15 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
     if (path.medium != kAir) // Beer-Lambert along the ray just traced
         path.beta *= transmittance(scene_.materials[path.medium].attenuation, hit.found() ? hit.t : kInf);
     if (!hit.found()) {
-        // Seen through a mirror or glass, the sky is what a camera ray that misses sees: no surface.
-        if (firstHits && path.first.open) path.first.albedo = Spectrum(0.0f), path.first.normal = Vec3(0.0f);
-        const Environment& env = scene_.environment;
-        path.L += path.beta * env.radiance(ray.dir) * hitWeight(path, lights_.environmentEmitter(), kInf);
-        if (env.sun && env.sun->covers(ray.dir)) path.L += path.beta * env.sun->radiance * hitWeight(path, lights_.sunEmitter(), kInf);
+        escape(path, firstHits);
         return false;
     }
-    if (hit.onSphere) { // sphere lights emit and reflect nothing
-        if (firstHits && path.first.open) {
-            const LocalLight& l = scene_.lights[hit.prim];
-            if (depth == 0) path.first.depth = hit.t;
-            path.first.albedo = Spectrum(0.0f);
-            path.first.normal = glm::normalize(ray.origin + hit.t * ray.dir - l.center);
-            path.first.open = false;
-        }
-        const uint32_t e = lights_.emitterOfLight(hit.prim);
-        path.L += path.beta * std::get<SphereEmitter>(lights_.emitter(e)).radiance * hitWeight(path, e, hit.t);
+    if (hit.onSphere) {
+        hitSphereLight(path, hit, firstHits);
         return false;
     }
 
+    // The surface point, and what its material is there.
     const ShadingTriangle& tri = triangles_[hit.prim];
     SurfacePoint sp = makeSurfacePoint(tri, hit);
     const Material& m = scene_.materials[sp.material];
@@ -73,98 +173,25 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
         }
         return false;
     }
-    if (m.isEmissive())
+    if (m.isEmissive()) // emission found by the path, weighed against next-event estimation
         path.L += path.beta * emittedRadiance(m, *scene_.textures, sp.uv, sp.footprint) *
                   hitWeight(path, lights_.emitterOfTriangle(hit.prim), hit.t);
     if (depth == settings_.maxDepth) return false;
     const ShadingPoint shading = evaluateMaterial(m, *scene_.textures, sp, -ray.dir, settings_.hemisphere);
-    const Frame& frame = shading.frame;
-    const Vec3 woLocal = shading.wo;
     const Bsdf& bsdf = shading.bsdf;
     // The geometric normal on the frame's side, for the tests that wi leaves from the side the
     // frame says (a frame turned to a back face turns it too, or the back would stay black).
     const Vec3 ng = shading.turned ? -sp.ng : sp.ng;
     if (firstHits && path.first.open) { // final unless the surface is a mirror or smooth glass
         if (depth == 0) path.first.depth = hit.t;
-        path.first.albedo = path.first.tint * bsdf.albedo(woLocal);
-        path.first.normal = woLocal.z >= 0.0f ? frame.n : -frame.n;
+        path.first.albedo = path.first.tint * bsdf.albedo(shading.wo);
+        path.first.normal = shading.wo.z >= 0.0f ? shading.frame.n : -shading.frame.n;
         path.first.open = !bsdf.hasNonDelta() && !bsdf.isBlack();
     }
     if (bsdf.isBlack()) return false;
-
-    // Next-event estimation: one emitter, one point on it; the shadow ray goes to the shadow
-    // stage with what it adds if nothing blocks it.
-    const float uLight = lights_.size() > 1 ? u.lightChoice : 0.0f;
-    const Vec2 uLightPoint = u.lightPoint;
-    if (settings_.lightSampling != LightSampling::Bsdf && !lights_.empty() && bsdf.hasNonDelta()) {
-        float pmf;
-        uint32_t e = lights_.choose(uLight, sp.p, frame.n, pmf);
-        LightSample ls = pmf > 0.0f ? lights_.sample(e, sp.p, uLightPoint) : LightSample{};
-        Vec3 wiLocal = frame.toLocal(ls.wi);
-        // The shading and the geometric normal must agree on the side wi leaves from, or the
-        // shadow ray would start on the wrong side of the surface.
-        if (ls.pdf > 0.0f && glm::dot(ls.wi, ng) * wiLocal.z > 0.0f) {
-            float bsdfPdf; // for MIS; evaluated with f in one pass
-            Spectrum f = bsdf.evalPdf(woLocal, wiLocal, bsdfPdf);
-            if (!isBlack(f) && !isBlack(ls.radiance)) {
-                ++counts.shadow;
-                float w = (ls.isDelta() || settings_.lightSampling != LightSampling::Mis) ? 1.0f
-                                                                                      : powerHeuristic(pmf * ls.pdf, bsdfPdf);
-                ShadowQuery q{Ray{}, 0.0f, -1, slot, path.beta * f * ls.radiance * (w / (pmf * ls.pdf))};
-                bool aimed = true;
-                if (ls.flags & kEmitterSurface) {
-                    // Between the two surfaces' offset points, so that neither self-intersects.
-                    Vec3 from = offsetRayOrigin(sp.p, sp.pError, sp.ng, ls.wi);
-                    Vec3 to = offsetRayOrigin(ls.point, ls.pointError, ls.normal, -ls.wi);
-                    Vec3 d = to - from;
-                    float len = glm::length(d);
-                    aimed = len > 0.0f;
-                    q.ray = Ray{from, d / len};
-                    q.distance = len;
-                } else {
-                    q.ray = spawnRay(sp, ls.wi);
-                    q.distance = ls.distance;
-                    q.skipLight = ls.skipLight;
-                }
-                if (path.medium != kAir || m.volume) { // a shadow ray through the surface travels in the medium beyond it
-                    const bool crosses = glm::dot(ls.wi, sp.ng) * glm::dot(ray.dir, sp.ng) > 0.0f;
-                    const uint32_t medium = crosses ? mediumAfterCrossing(path.medium, sp.material, m, ls.wi, sp.ng) : path.medium;
-                    if (medium != kAir) q.contribution *= transmittance(scene_.materials[medium].attenuation, q.distance);
-                }
-                if (aimed) shadows.push_back(q);
-            }
-        }
-    }
-
-    // Sample the BSDF to continue the path.
-    BsdfSample bs;
-    if (!bsdf.sample(woLocal, u.lobe, u.direction, bs)) return false;
-    Vec3 wi = frame.toWorld(bs.wi);
-    if ((glm::dot(wi, ng) > 0.0f) != (bs.wi.z > 0.0f)) return false; // see the shadow-ray note
-    if (m.volume && glm::dot(wi, sp.ng) * glm::dot(ray.dir, sp.ng) > 0.0f) // crossed a volume's surface
-        path.medium = mediumAfterCrossing(path.medium, sp.material, m, wi, sp.ng);
-    path.beta *= bs.weight;
-    path.etaScale *= bs.radianceScale;
-    // Through a mirror or smooth glass: what it passes tints the features of what lies beyond
-    // (without refraction's radiance scaling, which is no colour).
-    if (firstHits && path.first.open) path.first.tint *= bs.weight / bs.radianceScale;
-    path.deltaBefore = bs.isDelta();
-    path.prevPdf = bs.pdf;
-    path.prevP = sp.p;
-    path.prevN = frame.n;
-
-    // Russian roulette on the throughput without the refraction scaling, so paths inside glass
-    // are not cut for carrying radiance that is only compressed.
-    if (depth + 1 >= kRouletteDepth) {
-        float q = std::min(1.0f, maxComponent(path.beta / path.etaScale));
-        if (u.roulette >= q) return false;
-        path.beta /= q;
-    }
-    if (isBlack(path.beta)) return false;
-    path.ray = spawnRay(sp, wi);
-    path.depth = depth + 1;
-    ++counts.continuation;
-    return true;
+    if (settings_.lightSampling != LightSampling::Bsdf && !lights_.empty() && bsdf.hasNonDelta())
+        sampleLight(path, sp, m, shading, ng, u, slot, shadows, counts);
+    return continuePath(path, sp, m, shading, ng, u, firstHits, counts);
 }
 
 // The draw stage: the sample values of every active path's vertex at `depth` (all paths of a

@@ -10,6 +10,7 @@
 
 #include "accel/accel.h"
 #include "light/light_set.h"
+#include "material/evaluate_material.h"
 #include "render/path_state.h"
 #include "render/render_settings.h"
 #include "render/shading_triangles.h"
@@ -106,6 +107,19 @@ private:
     template <typename Sampler>
     bool shade(PathState<Sampler>& path, const Hit& hit, const VertexDraws& u, uint32_t slot, bool firstHits,
                std::vector<ShadowQuery>& shadows, RayCounts& counts) const;
+    // Its steps (path_tracer.cpp): a ray that left the scene, a sphere light hit, next-event
+    // estimation at a surface, and the BSDF-sampled continuation.
+    template <typename Sampler>
+    void escape(PathState<Sampler>& path, bool firstHits) const;
+    template <typename Sampler>
+    void hitSphereLight(PathState<Sampler>& path, const Hit& hit, bool firstHits) const;
+    template <typename Sampler>
+    void sampleLight(const PathState<Sampler>& path, const SurfacePoint& sp, const Material& m,
+                     const ShadingPoint& shading, const Vec3& ng, const VertexDraws& u, uint32_t slot,
+                     std::vector<ShadowQuery>& shadows, RayCounts& counts) const;
+    template <typename Sampler>
+    bool continuePath(PathState<Sampler>& path, const SurfacePoint& sp, const Material& m, const ShadingPoint& shading,
+                      const Vec3& ng, const VertexDraws& u, bool firstHits, RayCounts& counts) const;
     // Weight of emission found by BSDF sampling (or by the camera) at a hit `distance` along the path's ray.
     template <typename Sampler>
     float hitWeight(const PathState<Sampler>& path, uint32_t emitter, float distance) const;
