@@ -838,7 +838,7 @@ int renderCommand(int argc, char** argv) {
     const Film::SampleCounts counts = film.sampleCounts();
     uint64_t samples = uint64_t(std::llround(double(window.width()) * window.height() * counts.mean));
     if (!args.quiet && result.rays.discarded > std::max<uint64_t>(10, samples / 10000))
-        std::fprintf(err, "pt: warning: %llu of %llu samples came out NaN or infinite and were dropped; the image is "
+        std::fprintf(err, "pt: warning: %llu of %llu samples came out NaN, infinite or negative and were dropped; the image is "
                           "darker than it should be where they fell\n",
                      (unsigned long long)result.rays.discarded, (unsigned long long)samples);
     const RayCounts& r = result.rays;

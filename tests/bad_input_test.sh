@@ -180,7 +180,7 @@ check kd_beyond_10 1 'gain.mtl:2: Kd: 20 is beyond 10' $(render gain.obj gain)
 printf 'newmtl Gain\nKd 10\nnewcamera C\ncameraposition 0 0 0.5\ncameratarget 0 0 0\nnewlight L\nlightposition 0 0 0\nlightintensity 1\n' > box.mtl
 { echo 'mtllib box.mtl'; for z in -1 1; do for y in -1 1; do for x in -1 1; do echo "v $x $y $z"; done; done; done
   echo 'usemtl Gain'; printf 'f 1 2 4 3\nf 5 7 8 6\nf 1 5 6 2\nf 3 4 8 7\nf 1 3 7 5\nf 2 6 8 4\n'; } > box.obj
-check dropped_samples_warn 0 "samples came out NaN or infinite and were dropped" render box.obj -spp 2 --res 8x8 --max-depth 200 -o out/a.exr
+check dropped_samples_warn 0 "samples came out NaN, infinite or negative and were dropped" render box.obj -spp 2 --res 8x8 --max-depth 200 -o out/a.exr
 printf 'mtllib camera.mtl\n%sv -1e17 -1e17 -5\nv 1e17 -1e17 -5\nv 0 1e17 -5\nf 1 2 3\nf 4 5 6\n' "$tri" > backdrop.obj
 check backdrop_at_1e17 1 "backdrop.obj:5: v: coordinate beyond +-1e12" $(render backdrop.obj bd)
 printf 'mtllib camera.mtl\nv 0 0 0\nv 1e-7 0 0\nv 0 1e-7 0\nf 1 2 3\n' > tiny.obj

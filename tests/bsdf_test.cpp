@@ -20,7 +20,7 @@ std::vector<std::pair<std::string, Bsdf>> bsdfsAt(const Vec3& wo) {
     std::vector<std::pair<std::string, Bsdf>> out;
     for (float alpha : {0.001f, 0.2f})
         for (auto [name, m] : labMaterials()) {
-            m.roughness = alpha;
+            m.roughnessAlpha = alpha;
             Bsdf b;
             b.initLab(labParameters(m, m.kd), wo.z, HemisphereSampling::Cosine);
             out.emplace_back("lab " + name + " alpha " + std::to_string(alpha), b);

@@ -309,7 +309,7 @@ Material dielectric(Spectrum kd, float alpha, float eta) {
     m.model = MaterialModel::MetalRough;
     m.kd = kd;
     m.metallic = 0.0f;
-    m.roughness = alpha;
+    m.roughnessAlpha = alpha;
     m.eta = eta;
     return m;
 }

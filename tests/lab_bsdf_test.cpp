@@ -14,7 +14,7 @@ std::vector<std::pair<std::string, Material>> roughMaterials(const std::vector<f
     for (float alpha : alphas)
         for (auto [name, m] : labMaterials()) {
             if (name == "lambert") continue;
-            m.roughness = alpha;
+            m.roughnessAlpha = alpha;
             out.emplace_back(name + " alpha " + std::to_string(alpha), m);
         }
     return out;
@@ -101,7 +101,7 @@ TEST(LabBsdf, SamplingMatchesPdfAndEval) {
         for (float cosO : {1.0f, 0.7f, 0.2f, 0.01f, 0.001f, -0.05f, -0.5f, -0.99f})
             for (HemisphereSampling h : {HemisphereSampling::Cosine, HemisphereSampling::Uniform}) {
                 // At cos 0.001 the rough lobes' bins on the sphere are too coarse to integrate.
-                if (m.roughness > kSmoothAlpha && std::abs(cosO) < 0.01f) continue;
+                if (m.roughnessAlpha > kSmoothAlpha && std::abs(cosO) < 0.01f) continue;
                 Vec3 wo = directionAt(cosO);
                 LabBsdf b = LabBsdf::make(m, m.kd, wo.z, h);
                 Pcg32 rng(7, 11);
@@ -285,7 +285,7 @@ TEST(LabBsdf, RoughLobesFurnaceTable) {
             if (kind > 0) std::printf("  | ");
             for (float cosO : {1.0f, 0.5f, 0.1f}) {
                 Material m = kind == 0 ? mirror : glass;
-                m.roughness = alpha;
+                m.roughnessAlpha = alpha;
                 Vec3 wo = directionAt(kind == 2 ? -cosO : cosO);
                 LabBsdf b = LabBsdf::make(m, m.kd, wo.z);
                 Pcg32 rng(3, 5);
@@ -317,7 +317,7 @@ TEST(LabBsdf, RoughReflectionIsReciprocal) {
     mirror.r0 = Spectrum(1.0f); // F = 1 at every angle, so the blend weight does not depend on wo
     Pcg32 rng(9, 1);
     for (float alpha : {0.01f, 0.2f, 1.0f}) {
-        mirror.roughness = alpha;
+        mirror.roughnessAlpha = alpha;
         for (int k = 0; k < 200; ++k) {
             Vec3 a = directionAt(0.05f + 0.95f * rng.nextFloat(), 6.28f * rng.nextFloat());
             Vec3 c = directionAt(0.05f + 0.95f * rng.nextFloat(), 6.28f * rng.nextFloat());

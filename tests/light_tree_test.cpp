@@ -180,7 +180,7 @@ TEST(LightTree, ImagesAgreeWithBsdfSamplingAndPowerChoice) {
     glossy.ks = Spectrum(1.0f);
     glossy.r0 = Spectrum(0.05f);
     glossy.blend = 1.0f;
-    glossy.roughness = 0.2f;
+    glossy.roughnessAlpha = 0.2f;
     uint32_t w = addMaterial(s, wall), g = addMaterial(s, glossy);
     addQuad(s, Vec3(-1, -1, 1), Vec3(1, -1, 1), Vec3(1, -1, -1), Vec3(-1, -1, -1), g);
     addQuad(s, Vec3(-1, -1, -1), Vec3(1, -1, -1), Vec3(1, 1, -1), Vec3(-1, 1, -1), w);

@@ -40,7 +40,7 @@ TEST(Mtl, Defaults) {
     EXPECT_EQ(m.blend, 0.0f);
     EXPECT_EQ(m.transparency, 0.0f);
     EXPECT_EQ(m.eta, 1.0f);
-    EXPECT_FLOAT_EQ(m.roughness, 0.001f);
+    EXPECT_FLOAT_EQ(m.roughnessAlpha, 0.001f);
     EXPECT_EQ(m.emission, Spectrum(0.0f));
 }
 
@@ -71,7 +71,7 @@ TEST(Mtl, BothDialectsAndCaseInsensitivity) {
         EXPECT_EQ(m->blend, 0.75f);
         EXPECT_EQ(m->transparency, 0.5f);
         EXPECT_FLOAT_EQ(m->eta, 1.33f);
-        EXPECT_FLOAT_EQ(m->roughness, 0.2f);
+        EXPECT_FLOAT_EQ(m->roughnessAlpha, 0.2f);
         EXPECT_EQ(m->emission, Spectrum(1.0f, 2.0f, 3.0f));
     }
 }
@@ -107,9 +107,9 @@ TEST(Mtl, MetallicRewritesTheTree) {
 // specularroughness is GGX alpha as is; Pr is perceptual roughness, alpha = Pr^2.
 TEST(Mtl, Roughness) {
     Parsed p = parse("newmtl A\nspecularroughness 0.3\nnewmtl B\nPr 0.5\nnewmtl C\nKd 1\n");
-    EXPECT_FLOAT_EQ(p.material("A").roughness, 0.3f);
-    EXPECT_FLOAT_EQ(p.material("B").roughness, 0.25f);
-    EXPECT_FLOAT_EQ(p.material("C").roughness, 0.001f);
+    EXPECT_FLOAT_EQ(p.material("A").roughnessAlpha, 0.3f);
+    EXPECT_FLOAT_EQ(p.material("B").roughnessAlpha, 0.25f);
+    EXPECT_FLOAT_EQ(p.material("C").roughnessAlpha, 0.001f);
 }
 
 TEST(Mtl, LightsAndCameras) {

@@ -123,7 +123,7 @@ Material gltfMaterial(Spectrum base, float metallic, float alpha, float clearcoa
     m.model = MaterialModel::MetalRough;
     m.kd = base;
     m.metallic = metallic;
-    m.roughness = alpha;
+    m.roughnessAlpha = alpha;
     m.eta = 1.5f;
     m.clearcoat = clearcoat;
     m.clearcoatAlpha = 0.01f;
@@ -390,7 +390,7 @@ TEST(RoughLobes, ConvergeToTheSmoothOnes) {
     Warnings w;
     Scene smooth = loadScene(std::string(PT_SOURCE_DIR) + "/scenes/glass.obj", w);
     Scene rough = smooth;
-    for (Material& m : rough.materials) m.roughness = 0.0011f;
+    for (Material& m : rough.materials) m.roughnessAlpha = 0.0011f;
     Rendered a = render(smooth, 64, 64, 256), b = render(rough, 64, 64, 256, RenderSettings{.seed = 3});
     EXPECT_GT(b.rays.shadow, 0u);
     expectSameImage(b, a, "alpha 0.0011 against the smooth lobes");
@@ -415,7 +415,7 @@ Scene roughMetalStrips() {
         metal.kd = Spectrum(0.0f);
         metal.blend = 1.0f;
         metal.r0 = Spectrum(0.9f, 0.7f, 0.4f);
-        metal.roughness = alphas[k];
+        metal.roughnessAlpha = alphas[k];
         float x0 = -2.0f + k, x1 = x0 + 1.0f;
         addQuad(scene, {x0, 0, 1}, {x1, 0, 1}, {x1, 0, -1}, {x0, 0, -1}, addMaterial(scene, metal));
     }

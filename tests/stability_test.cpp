@@ -19,7 +19,7 @@ Material gltfGlass(bool volume) {
     glass.model = MaterialModel::MetalRough;
     glass.kd = Spectrum(1.0f);
     glass.metallic = 0.0f;
-    glass.roughness = 0.0f;
+    glass.roughnessAlpha = 0.0f;
     glass.eta = 1.5f;
     glass.transparency = 1.0f;
     glass.volume = volume;

@@ -48,7 +48,7 @@ Scene groundScene() {
     gloss.kd = Spectrum(0.0f);
     gloss.ks = Spectrum(0.95f, 0.75f, 0.45f);
     gloss.metallic = 1.0f;
-    gloss.roughness = 0.1f;
+    gloss.roughnessAlpha = 0.1f;
     gloss.eta = 1.5f;
     addQuad(scene, Vec3(-4, 0, 4), Vec3(4, 0, 4), Vec3(4, 0, -4), Vec3(-4, 0, -4), addMaterial(scene, ground));
     addIcosphere(scene, Vec3(-0.55f, 0.5f, 0), 0.5f, 3, addMaterial(scene, white), false, true);

@@ -169,7 +169,7 @@ TEST(TextureRender, CameraRaysPassCutouts) {
     Material screen;
     screen.kd = Spectrum(0.0f);
     screen.alphaMap = mapOf(constantTexture(scene, {1.0f}, false), TextureChannel::Luminance);
-    screen.alpha = 0.5f; // d 0.5 with map_d
+    screen.coverage = 0.5f; // d 0.5 with map_d
     addUvQuad(scene, {-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}, addMaterial(scene, screen), Vec2(0.0f), Vec2(1.0f));
     Rendered one = render(scene, 16, 16, 256, {}, 1), two = render(scene, 16, 16, 256, {}, 2);
     expectNear(regionStats(one, 0, 0, 16, 16), Spectrum(0.5f), 4.0f, 0.0f, "half the wall shows through");
@@ -201,7 +201,7 @@ TEST(TextureRender, ExtensionMapsMultiplyTheirFactors) {
     m.model = MaterialModel::MetalRough;
     m.kd = Spectrum(0.5f, 0.4f, 0.3f);
     m.metallic = 0.0f;
-    m.roughness = 0.09f;
+    m.roughnessAlpha = 0.09f;
     m.eta = 2.0f; // F0 0.11, so that the specular colour shows
     EXPECT_EQ(sphere(m, Factors), sphere(m, Maps)) << "specular and specular colour maps";
     EXPECT_NE(sphere(m, Factors), sphere(m, Bare)) << "the constants change the image";

@@ -323,7 +323,7 @@ TEST(Texture, DataMapKeywordsAndOptions) {
     const Material& m = p.scene.materials[0];
     EXPECT_TRUE(m.alphaMap.used());
     EXPECT_EQ(m.alphaMap.channel, TextureChannel::Alpha) << "map_d reads the alpha channel when there is one";
-    EXPECT_EQ(m.alpha, 0.5f) << "d scales coverage when map_d is given";
+    EXPECT_EQ(m.coverage, 0.5f) << "d scales coverage when map_d is given";
     EXPECT_EQ(m.transparency, 0.25f) << "and is no transparency then";
     EXPECT_EQ(m.roughnessMap.channel, TextureChannel::G);
     EXPECT_EQ(m.metallicMap.channel, TextureChannel::R);
@@ -336,7 +336,7 @@ TEST(Texture, DataMapKeywordsAndOptions) {
 
     Parsed plain = parse("newmtl A\nd 0.5\n", dir.string());
     EXPECT_EQ(plain.scene.materials[0].transparency, 0.5f) << "without map_d, d is the lab's transparency";
-    EXPECT_EQ(plain.scene.materials[0].alpha, 1.0f);
+    EXPECT_EQ(plain.scene.materials[0].coverage, 1.0f);
     Parsed grey = parse("newmtl A\nmap_d grey.png\n", dir.string());
     EXPECT_EQ(grey.scene.materials[0].alphaMap.channel, TextureChannel::Luminance);
 

@@ -1,5 +1,6 @@
 #include "accel/accel.h"
 
+#include "accel/embree_scene.h"
 #include "io/load_error.h"
 
 #include <embree3/rtcore.h>
@@ -10,21 +11,6 @@
 namespace pt {
 
 namespace {
-
-constexpr unsigned kOpaqueGeometry = 0, kCutoutGeometry = 1, kSphereGeometry = 2;
-constexpr unsigned kCameraRay = 1u << 1, kAnyRay = 0xFFFFFFFFu & ~kCameraRay;
-
-// Triangles of materials with a cutout (map_d) sit in a geometry of their own whose filter
-// function drops hits where the surface is not there; the opaque rest has no filter and pays
-// nothing. Coverage between 0 and 1 is a coin flip keyed on the hit and the ray, so an image does
-// not depend on which thread traced what. Unlit materials (glTF KHR_materials_unlit) sit there
-// too: only camera rays see them, as Blender's importer has it; every other ray passes.
-// Camera rays carry kCameraRay in their mask (every geometry's mask is all ones, so masks
-// select nothing else).
-struct Cutouts {
-    const Scene* scene = nullptr;
-    std::vector<uint32_t> triangle; // primitive of the cutout geometry -> scene triangle
-};
 
 uint32_t floatBits(float f) {
     uint32_t u;
@@ -58,7 +44,7 @@ void cutoutFilter(const RTCFilterFunctionNArguments* args) {
             continue;
         }
         if (!m.hasCutout()) continue;
-        float coverage = m.alpha * scene.textures->scalar(m.alphaMap, scene.uvAt(tri, u, v), Footprint{});
+        float coverage = m.coverage * scene.textures->scalar(m.alphaMap, scene.uvAt(tri, u, v), Footprint{});
         if (m.alphaCutoff >= 0.0f) coverage = coverage >= m.alphaCutoff ? 1.0f : 0.0f;
         if (coverage >= 1.0f) continue;
         float coin = coverageCoin(tri, u, v, RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
@@ -67,24 +53,7 @@ void cutoutFilter(const RTCFilterFunctionNArguments* args) {
     }
 }
 
-// Sphere lights (radius > 0), tested exactly by intersectSphere. A few are tested one by one after
-// each Embree query; more go into the BVH as an Embree user geometry, which culls them like
-// triangles. Both are needed: the loop costs every ray time in proportion to the number of lights
-// (five times slower with 257 of them), while a user geometry moves Embree to its slower
-// mixed-geometry traversal for every ray (+1,300 instructions per path on cornellbottle2).
-constexpr size_t kSpheresLooped = 8;
 
-struct Spheres {
-    std::vector<glm::vec4> centerRadius;
-    std::vector<uint32_t> light; // primitive -> index in Scene::lights
-    bool inBvh = false;
-};
-
-// The context of a shadow query: Embree's, and the sphere light the ray is aimed at (not a blocker).
-struct QueryContext {
-    RTCIntersectContext embree;
-    int skipLight = -1;
-};
 
 void sphereBounds(const RTCBoundsFunctionArguments* args) {
     const glm::vec4& s = static_cast<const Spheres*>(args->geometryUserPtr)->centerRadius[args->primID];
@@ -130,15 +99,6 @@ void sphereOccluded(const RTCOccludedFunctionNArguments* args) {
 
 } // namespace
 
-struct Accel::Impl {
-    RTCDevice device = nullptr;
-    RTCScene scene = nullptr;
-    std::string error;
-    // Scene triangle of each primitive, per geometry; empty: the identity (no cutouts).
-    std::vector<uint32_t> opaqueTriangle;
-    Cutouts cutouts;
-    Spheres spheres;
-};
 
 static void onEmbreeError(void* user, RTCError code, const char* message) {
     auto* error = static_cast<std::string*>(user);
@@ -240,31 +200,6 @@ float intersectSphere(const Vec3& origin, const Vec3& dir, const Vec3& center, f
     return kInf;
 }
 
-static void fillRay(RTCRay& r, const Ray& ray, float tfar) {
-    r.org_x = ray.origin.x;
-    r.org_y = ray.origin.y;
-    r.org_z = ray.origin.z;
-    r.dir_x = ray.dir.x;
-    r.dir_y = ray.dir.y;
-    r.dir_z = ray.dir.z;
-    r.tnear = 0.0f;
-    r.tfar = tfar;
-    r.time = 0.0f;
-    r.mask = kAnyRay; // Debian's Embree is built with ray masks
-    r.id = 0;
-    r.flags = 0;
-}
-
-// Lane `i` of a packet of 8 rays, with no hit yet.
-static void fillPacketLane(RTCRayHit8& packet, int i, const Vec3& origin, const Vec3& dir, float tfar) {
-    RTCRay8& p = packet.ray;
-    p.org_x[i] = origin.x, p.org_y[i] = origin.y, p.org_z[i] = origin.z;
-    p.dir_x[i] = dir.x, p.dir_y[i] = dir.y, p.dir_z[i] = dir.z;
-    p.tnear[i] = 0.0f, p.tfar[i] = tfar, p.time[i] = 0.0f;
-    p.mask[i] = kAnyRay | kCameraRay, p.id[i] = 0, p.flags[i] = 0; // packets carry camera rays
-    packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
-    packet.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
-}
 
 Hit Accel::hitOf(unsigned geomID, unsigned primID, float t, float u, float v) const {
     Hit hit;
@@ -351,57 +286,5 @@ bool Accel::occluded(const Ray& ray, float tfar, int skipLight) const {
     return r.tfar < 0.0f; // Embree sets tfar to -inf when it finds an occluder
 }
 
-size_t Accel::traceBare(const RayRecord* rays, size_t count, Replay mode) const {
-    size_t hits = 0;
-    std::vector<RTCRay> shadowStream;
-    alignas(32) RTCRayHit8 packet;
-    alignas(32) int valid[kPacket];
-    int lanes = 0;
-    // A stream has one context, so its rays cannot each skip their light: a shadow ray aimed at a
-    // sphere light may stop at it there (the study times the calls; it does not use the answers).
-    QueryContext coherent;
-    rtcInitIntersectContext(&coherent.embree);
-    coherent.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    auto flushPacket = [&] {
-        for (int i = lanes; i < kPacket; ++i) valid[i] = 0;
-        rtcIntersect8(valid, impl_->scene, &coherent.embree, &packet);
-        for (int i = 0; i < lanes; ++i) hits += packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
-        lanes = 0;
-    };
-    for (size_t i = 0; i < count; ++i) {
-        const RayRecord& r = rays[i];
-        QueryContext query;
-        rtcInitIntersectContext(&query.embree);
-        query.skipLight = r.skipLight;
-        RTCIntersectContext& context = query.embree;
-        if (r.kind == RayRecord::Kind::Shadow) {
-            RTCRay ray;
-            fillRay(ray, Ray{r.origin, r.dir}, r.tfar);
-            if (mode == Replay::ShadowStreams) {
-                shadowStream.push_back(ray);
-                continue;
-            }
-            rtcOccluded1(impl_->scene, &context, &ray);
-            hits += ray.tfar < 0.0f;
-        } else if (r.kind == RayRecord::Kind::Camera && mode != Replay::OneByOne) {
-            fillPacketLane(packet, lanes, r.origin, r.dir, r.tfar);
-            valid[lanes++] = -1;
-            if (lanes == kPacket) flushPacket();
-        } else {
-            if (r.kind == RayRecord::Kind::Camera) context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-            RTCRayHit rh;
-            fillRay(rh.ray, Ray{r.origin, r.dir}, r.tfar);
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(impl_->scene, &context, &rh);
-            hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-        }
-    }
-    if (lanes > 0) flushPacket();
-    if (!shadowStream.empty()) {
-        rtcOccluded1M(impl_->scene, &coherent.embree, shadowStream.data(), unsigned(shadowStream.size()), sizeof(RTCRay));
-        for (const RTCRay& ray : shadowStream) hits += ray.tfar < 0.0f;
-    }
-    return hits;
-}
 
 } // namespace pt

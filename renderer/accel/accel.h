@@ -10,8 +10,8 @@
 
 namespace pt {
 
-// Rays always start at tnear = 0: surface origins are offset by spawnRay (core/ray_offset.h)
-// instead of relying on an epsilon here. `dir` must be unit length.
+// Rays always start at tnear = 0: surface origins are offset by spawnRay (render/surface_hit.h,
+// by the error bound of core/ray_offset.h) instead of relying on an epsilon here. `dir` must be unit length.
 struct Ray {
     Vec3 origin;
     Vec3 dir;
@@ -38,7 +38,7 @@ struct RayRecord {
 };
 
 // How Embree builds the BVH. The defaults are chosen by pt-bench's comparison of all of them on
-// the rays of a cornellbottle2 frame (see the README's Performance section).
+// the rays of a cornellbottle2 frame (see docs/performance.md).
 struct AccelOptions {
     enum class Quality : uint8_t { Low, Medium, High };
     Quality quality = Quality::High;
@@ -71,7 +71,8 @@ public:
     // so the work cannot be optimised away. Camera rays go as the path tracer sends them, in
     // coherent packets of kPacket (or one by one: OneByOne); continuation rays one by one
     // (rtcIntersect1); shadow rays one by one (rtcOccluded1) or, with ShadowStreams, as one
-    // coherent stream (rtcOccluded1M), to measure what a staged path loop would gain.
+    // coherent stream (rtcOccluded1M), to measure what streams would gain the staged loop's shadow
+    // stage. In accel/ray_replay.cpp.
     enum class Replay { AsTraced, OneByOne, ShadowStreams };
     size_t traceBare(const RayRecord* rays, size_t count, Replay mode = Replay::AsTraced) const;
 

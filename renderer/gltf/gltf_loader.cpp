@@ -533,7 +533,7 @@ private:
                 m.model = MaterialModel::MetalRough;
                 m.kd = Spectrum(1.0f);
                 m.metallic = 1.0f;
-                m.roughness = 1.0f;
+                m.roughnessAlpha = 1.0f;
                 m.eta = 1.5f;
                 defaultMaterial_ = uint32_t(scene_.materials.size());
                 scene_.materials.push_back(m);
@@ -559,7 +559,7 @@ private:
         };
         for (int c = 0; c < 3; ++c) unit(m.kd[c], "baseColorFactor");
         m.metallic = unit(metallic, "metallicFactor");
-        m.roughness = sqr(unit(roughness, "roughnessFactor")); // alpha
+        m.roughnessAlpha = sqr(unit(roughness, "roughnessFactor")); // alpha
         unit(opacity, "baseColorFactor's alpha");
         m.eta = 1.5f;
         if (auto ior = g.extensions.find("KHR_materials_ior"); ior != g.extensions.end() && ior->second.Has("ior")) {
@@ -666,7 +666,7 @@ private:
         // Coverage: MASK cuts at alphaCutoff, BLEND is stochastic (rays pass 1 - alpha of the time).
         std::string mode = g.alphaMode.empty() ? "OPAQUE" : g.alphaMode;
         if (mode == "MASK" || mode == "BLEND") {
-            m.alpha = opacity;
+            m.coverage = opacity;
             if (mode == "MASK") m.alphaCutoff = float(g.alphaCutoff);
             if (pbr.baseColorTexture.index >= 0 &&
                 (*scene_.textures)[texture(pbr.baseColorTexture.index, false, what + " baseColorTexture")].hasAlpha()) {

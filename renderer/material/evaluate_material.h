@@ -3,7 +3,9 @@
 // those inputs (the lab tree after the Pm rule, or glTF's metallic-roughness), then the BSDF made
 // from the parameters for the outgoing direction (lab_bsdf.h, metal_rough_bsdf.h), which
 // evaluates, samples and gives densities. New maps go into the fetch, new lobes into a model's
-// parameters: nothing else reads a texture or a material's factors.
+// parameters. The BSDF is read nowhere else; a material's other properties are, where they are
+// not the BSDF's: its emission (scene/emission.h: the path loop and the light set), its coverage
+// (accel.cpp's cutout filter), unlit and volume (the path loop).
 #pragma once
 
 #include "material/bsdf.h"
@@ -24,14 +26,14 @@ struct ShadingPoint {
 
 // Step 2, lab model: the material's factors, replaced (Pr, Pm) or multiplied (Kd, Ks) by its maps.
 inline LabParameters labParameters(const Material& m, const SurfaceInputs& in) {
-    return labParameters(m, m.kd * in.kd, m.ks * in.ks, m.roughnessMap.used() ? sqr(in.roughness) : m.roughness,
+    return labParameters(m, m.kd * in.kd, m.ks * in.ks, m.roughnessMap.used() ? sqr(in.roughness) : m.roughnessAlpha,
                          m.metallicMap.used() ? in.metallic : m.metallic);
 }
 
 // Step 2, glTF model: textures multiply factors; roughness = factor * G, so alpha = factor^2 G^2
 // (the sheen's roughness is its alpha as it is).
 inline MetalRoughParameters metalRoughParameters(const Material& m, const SurfaceInputs& in) {
-    MetalRoughParameters p{m.kd * in.kd,  std::max(0.0f, m.metallic) * in.metallic, m.roughness * sqr(in.roughness),
+    MetalRoughParameters p{m.kd * in.kd,  std::max(0.0f, m.metallic) * in.metallic, m.roughnessAlpha * sqr(in.roughness),
                            m.eta,         m.ks * in.ks,
                            m.specular * in.specular, m.clearcoat * in.clearcoat,
                            m.clearcoatAlpha * sqr(in.clearcoatRoughness)};

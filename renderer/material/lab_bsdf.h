@@ -65,7 +65,7 @@ inline LabParameters labParameters(const Material& m, const Spectrum& kd, const 
     return p;
 }
 inline LabParameters labParameters(const Material& m, const Spectrum& kd) {
-    return labParameters(m, kd, m.ks, m.roughness, m.metallic);
+    return labParameters(m, kd, m.ks, m.roughnessAlpha, m.metallic);
 }
 
 struct LabBsdf {

@@ -1,6 +1,7 @@
-// Step 1 of evaluating a material at a hit (evaluate_material.h): the texture fetch. Every map a
-// material has is read here, and nothing else reads one, so the model steps after it work on
-// plain values: a batch of hits can fetch together, then shade together.
+// Step 1 of evaluating a material at a hit (evaluate_material.h): the texture fetch. Every map
+// the BSDF depends on is read here, so the model steps after it work on plain values: a batch of
+// hits can fetch together, then shade together. (The emission map is read by scene/emission.h,
+// the coverage map by accel.cpp's cutout filter: neither is the BSDF's.)
 #pragma once
 
 #include "scene/emission.h"

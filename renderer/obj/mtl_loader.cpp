@@ -241,7 +241,7 @@ void MtlParser::finishMaterial() {
     Material m = material.m;
     if (material.metallic) m.metallic = *material.metallic; // the Pm rule is applied at each hit
     if (m.alphaMap.used() && material.d) { // with a cutout, d scales coverage and is no transparency
-        m.alpha = *material.d;
+        m.coverage = *material.d;
         m.transparency = material.tr.value_or(0.0f);
     }
     if (m.normalMap.used() && m.bumpMap.used()) {
@@ -442,10 +442,10 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
         if (!(m.eta > 0.0f)) t.fail(std::string(keyword) + ": expected an index of refraction > 0");
     } else if (is("specularroughness")) { // GGX alpha, as is
         requireBlock(Block::Material, keyword, t);
-        m.roughness = nonNegative(t, keyword);
+        m.roughnessAlpha = nonNegative(t, keyword);
     } else if (is("Pr")) { // perceptual roughness, as in glTF and Blender: alpha = Pr^2
         requireBlock(Block::Material, keyword, t);
-        m.roughness = sqr(unitInterval(t, keyword));
+        m.roughnessAlpha = sqr(unitInterval(t, keyword));
     } else if (is("emittance") || is("Ke")) {
         requireBlock(Block::Material, keyword, t);
         m.emission = nonNegativeColor(t, keyword);

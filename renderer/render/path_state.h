@@ -14,7 +14,7 @@ namespace pt {
 // specular: through mirrors and smooth glass the path is followed (as OIDN's documentation and
 // Cycles do), so that what is seen in them or behind them keeps its edges and texture.
 struct FirstHit {
-    Spectrum albedo{0.0f}; // the BSDF's total reflectance towards the ray (all lobes), times tint
+    Spectrum albedo{0.0f}; // Bsdf::albedo at wo (each lobe's colour times its share), times tint
     Vec3 normal{0.0f};     // shading normal, turned to face the ray
     float depth = kInf;    // distance along the camera ray
     Spectrum tint{1.0f};   // what the perfectly specular surfaces passed so far let through

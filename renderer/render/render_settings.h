@@ -32,7 +32,7 @@ struct RayCounts {
     uint64_t camera = 0;
     uint64_t continuation = 0; // rays after a scattering event (BSDF-sampled)
     uint64_t shadow = 0;
-    uint64_t discarded = 0; // samples that came out NaN or infinite and were dropped
+    uint64_t discarded = 0; // samples that came out NaN, infinite or negative and were dropped
     uint64_t clamped = 0;   // samples scaled down by RenderSettings::clamp
 
     uint64_t total() const { return camera + continuation + shadow; }

@@ -14,7 +14,8 @@
 
 namespace pt {
 
-// Pinhole camera looking from position at target; fovY is the vertical field of view in degrees.
+// A camera looking from position at target: a pinhole whose vertical field of view is fovY
+// degrees, or, with orthoHalfHeight > 0, orthographic (glTF's orthographic cameras).
 struct Camera {
     std::string name;
     Vec3 position{0.0f, 0.0f, 0.0f};
@@ -78,9 +79,9 @@ struct Material {
     float blend = 0.0f;           // w, weight of the Fresnel blend (reflat90deg)
     float transparency = 0.0f;    // T (transparency, Tr, 1 - d)
     float eta = 1.0f;             // index of refraction inside the surface (Ni)
-    float roughness = 0.001f;     // GGX alpha (specularroughness, or Pr^2); <= 0.001 is smooth
+    float roughnessAlpha = 0.001f; // GGX alpha, not perceptual roughness (specularroughness, or Pr^2); <= 0.001 is smooth
     float metallic = -1.0f;       // Pm in [0, 1], applied when the material is evaluated; < 0: not given
-    float alpha = 1.0f;           // coverage multiplier of map_d (d, where map_d is given)
+    float coverage = 1.0f;        // multiplies map_d's coverage (d, where map_d is given; glTF's base alpha)
     float alphaCutoff = -1.0f;    // >= 0: coverage is 1 at or above it and 0 below (glTF MASK)
     float specular = 1.0f;        // glTF KHR_materials_specular's specularFactor
     float clearcoat = 0.0f;       // glTF KHR_materials_clearcoat: the coat's weight (clearcoatFactor)
@@ -95,7 +96,7 @@ struct Material {
     TextureMap metallicMap;       // metallic, replacing Pm (map_Pm)
     TextureMap normalMap;         // tangent-space normal map (norm)
     TextureMap bumpMap;           // height map, height = -bm * value (bump, map_bump)
-    TextureMap alphaMap;          // coverage = alpha * value (map_d); rays pass the rest
+    TextureMap alphaMap;          // coverage = coverage * value (map_d); rays pass the rest
     TextureMap emissionMap;       // multiplies emission (glTF emissiveTexture)
     TextureMap clearcoatMap;          // R multiplies clearcoat
     TextureMap clearcoatRoughnessMap; // G multiplies the coat's roughness
