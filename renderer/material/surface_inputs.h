@@ -11,23 +11,6 @@
 
 namespace pt {
 
-// What a material's maps give at one hit, before any model's rules. A value whose map the
-// material does not have keeps its default: the model step (lab_bsdf.h, metal_rough_bsdf.h)
-// reads the material's own factor there.
-struct SurfaceInputs {
-    Vec3 normal{0.0f, 0.0f, 1.0f}; // shading normal after the normal or bump map, on the geometric side of wo
-    Spectrum kd{1.0f};              // map_Kd / baseColorTexture times vertex colours
-    Spectrum ks{1.0f};              // map_Ks / specularColorTexture
-    float specular = 1.0f;          // specularTexture A
-    float transmission = 1.0f;      // transmissionTexture R
-    Spectrum sheenColor{1.0f};      // sheenColorTexture
-    float sheenRoughness = 1.0f;    // sheenRoughnessTexture A
-    float roughness = 1.0f;         // map_Pr / metallicRoughness G, in [0, 1] (perceptual: alpha = value^2)
-    float metallic = 1.0f;          // map_Pm / metallicRoughness B, in [0, 1]
-    float clearcoat = 1.0f;         // clearcoatTexture R
-    float clearcoatRoughness = 1.0f; // clearcoatRoughnessTexture G (perceptual)
-    Vec3 clearcoatNormal{0.0f};     // the coat's normal (its own map, else the interpolated one); set where clearcoat > 0
-};
 
 // The interpolated normal after a tangent-space normal map (y along increasing v), unnormalized.
 inline Vec3 normalFromMap(const TextureMap& map, const TextureCache& textures, const SurfacePoint& sp) {
@@ -84,15 +67,13 @@ inline Vec3 perturbedNormal(const Material& m, const TextureCache& textures, con
 [[gnu::noinline]] inline void fetchMaps(const Material& m, const TextureCache& textures, const SurfacePoint& sp,
                                         SurfaceInputs& in) {
     auto unit = [&](const TextureMap& map) { return std::clamp(textures.scalar(map, sp.uv, sp.footprint), 0.0f, 1.0f); };
-    if (m.kdMap.used()) in.kd = textures.color(m.kdMap, sp.uv, sp.footprint);
+    for (const MaterialMapEntry& e : kMaterialMaps) {
+        const TextureMap& map = m.*e.map;
+        if (!map.used()) continue;
+        if (e.fetch == MapFetch::Color) in.*e.color = textures.color(map, sp.uv, sp.footprint);
+        else if (e.fetch == MapFetch::Unit) in.*e.unit = unit(map);
+    }
     if (m.vertexColors) in.kd *= sp.color;
-    if (m.ksMap.used()) in.ks = textures.color(m.ksMap, sp.uv, sp.footprint);
-    if (m.roughnessMap.used()) in.roughness = unit(m.roughnessMap);
-    if (m.metallicMap.used()) in.metallic = unit(m.metallicMap);
-    if (m.specularMap.used()) in.specular = unit(m.specularMap);
-    if (m.transmissionMap.used()) in.transmission = unit(m.transmissionMap);
-    if (m.sheenColorMap.used()) in.sheenColor = textures.color(m.sheenColorMap, sp.uv, sp.footprint);
-    if (m.sheenRoughnessMap.used()) in.sheenRoughness = unit(m.sheenRoughnessMap);
 }
 
 // Reads every map of `m` at the hit. `wo` points back along the arriving ray. Textured materials

@@ -104,13 +104,9 @@ static void checkMaps(const Scene& scene, const Material& m) {
     check(m.emissionMap, maxComponent(m.emission), kMaxRadiance, "emission", "the radiance limit 1e18");
     check(m.normalMap, std::abs(m.normalMap.bumpScale), kMaxNormalScale, "normal", "1e6, where normals overflow float");
     check(m.bumpMap, std::abs(m.bumpMap.bumpScale), kMaxNormalScale, "bump", "1e6, where normals overflow float");
-    const std::pair<const TextureMap*, const char*> maps[] = {
-        {&m.kdMap, "diffuse or base colour"}, {&m.ksMap, "specular colour"}, {&m.roughnessMap, "roughness"},
-        {&m.metallicMap, "metallic"}, {&m.normalMap, "normal"}, {&m.bumpMap, "bump"}, {&m.alphaMap, "coverage"},
-        {&m.emissionMap, "emission"}, {&m.clearcoatMap, "clear coat"}, {&m.clearcoatRoughnessMap, "clear coat roughness"},
-        {&m.clearcoatNormalMap, "clear coat normal"}, {&m.specularMap, "specular"}, {&m.transmissionMap, "transmission"},
-        {&m.sheenColorMap, "sheen colour"}, {&m.sheenRoughnessMap, "sheen roughness"}};
-    for (const auto& [map, what] : maps) {
+    for (const MaterialMapEntry& e : kMaterialMaps) {
+        const TextureMap* map = &(m.*e.map);
+        const char* what = e.what;
         float peak = std::max({std::abs(map->linear[0].x), std::abs(map->linear[0].y), std::abs(map->linear[1].x),
                                std::abs(map->linear[1].y), std::abs(map->offset.x), std::abs(map->offset.y)});
         if (map->used() && !(peak <= kMaxTextureTransform))

@@ -4,6 +4,7 @@
 
 #include "core/math.h"
 #include "environment/environment.h"
+#include "scene/material.h"
 #include "texture/texture_cache.h"
 
 #include <cstdint>
@@ -50,72 +51,11 @@ struct LocalLight {
     Spectrum radiance() const { return intensity / (kPi * radius * radius); }
 };
 
-// Which BSDF a material is: the lab's tree (OBJ + MTL), or glTF 2.0's metallic-roughness BRDF
-// (material/metal_rough_bsdf.h), whose base colour is kd, alpha roughness, metallic and eta its
-// ior, each texture multiplying its factor; ks and specular are KHR_materials_specular's colour
-// and weight, transparency KHR_materials_transmission's factor.
-enum class MaterialModel : uint8_t { Lab, MetalRough };
-
 // A light at infinity in one direction (glTF's directional light): irradiance on a surface facing it.
 struct DirectionalLight {
     std::string name;
     Vec3 direction{0.0f, 1.0f, 0.0f}; // unit, towards the light
     Spectrum irradiance{1.0f};        // W/m^2
-};
-
-// A material as its file gives it; material/evaluate_material.h turns it into a BSDF at a hit.
-// Parameters of the lab material tree (see material/lab_bsdf.h for how they combine):
-//   f  = w * FresnelBlend(R0)[reflect: Spec(Ks), otherwise: B1] + (1 - w) * B1
-//   B1 = T * Refr(eta) + (1 - T) * Diffuse(Kd)
-struct Material {
-    // The factors first, maps after: a hit on an untextured material reads the first cache lines only.
-    MaterialModel model = MaterialModel::Lab;
-    bool volume = false;          // glTF KHR_materials_volume: the mesh bounds a volume that refracting paths enter
-    bool vertexColors = false;    // glTF COLOR_0 multiplies kd (Scene::vertexColors)
-    bool unlit = false;           // glTF KHR_materials_unlit: camera rays see kd, nothing else sees it
-    Spectrum kd{0.7f};            // Lambert reflectance (Kd, diffuseReflectance)
-    Spectrum ks{1.0f};            // mirror colour (Ks, specularReflectance)
-    Spectrum r0{0.0f};            // Fresnel reflectance at normal incidence (reflat0deg)
-    float blend = 0.0f;           // w, weight of the Fresnel blend (reflat90deg)
-    float transparency = 0.0f;    // T (transparency, Tr, 1 - d)
-    float eta = 1.0f;             // index of refraction inside the surface (Ni)
-    float roughnessAlpha = 0.001f; // GGX alpha, not perceptual roughness (specularroughness, or Pr^2); <= 0.001 is smooth
-    float metallic = -1.0f;       // Pm in [0, 1], applied when the material is evaluated; < 0: not given
-    float coverage = 1.0f;        // multiplies map_d's coverage (d, where map_d is given; glTF's base alpha)
-    float alphaCutoff = -1.0f;    // >= 0: coverage is 1 at or above it and 0 below (glTF MASK)
-    float specular = 1.0f;        // glTF KHR_materials_specular's specularFactor
-    float clearcoat = 0.0f;       // glTF KHR_materials_clearcoat: the coat's weight (clearcoatFactor)
-    float clearcoatAlpha = 0.0f;  // and its GGX alpha (clearcoatRoughnessFactor^2)
-    Spectrum sheenColor{0.0f};    // glTF KHR_materials_sheen (black: no sheen)
-    float sheenRoughness = 0.0f;  // and its roughness (the Charlie distribution's alpha)
-    Spectrum attenuation{0.0f};   // the volume's absorption coefficient per unit length (0: clear)
-    Spectrum emission{0.0f};      // emitted radiance, both sides (Ke, emittance)
-    TextureMap kdMap;             // multiplies kd (map_Kd), with its -s, -o and -clamp options
-    TextureMap ksMap;             // multiplies ks (map_Ks, glTF specularColorTexture)
-    TextureMap roughnessMap;      // perceptual roughness: alpha = value^2 (map_Pr)
-    TextureMap metallicMap;       // metallic, replacing Pm (map_Pm)
-    TextureMap normalMap;         // tangent-space normal map (norm)
-    TextureMap bumpMap;           // height map, height = -bm * value (bump, map_bump)
-    TextureMap alphaMap;          // coverage = coverage * value (map_d); rays pass the rest
-    TextureMap emissionMap;       // multiplies emission (glTF emissiveTexture)
-    TextureMap clearcoatMap;          // R multiplies clearcoat
-    TextureMap clearcoatRoughnessMap; // G multiplies the coat's roughness
-    TextureMap clearcoatNormalMap;    // the coat's own tangent-space normal map
-    TextureMap specularMap;       // A multiplies specular (glTF specularTexture; its colour is ksMap)
-    TextureMap transmissionMap;   // R multiplies transparency (glTF transmissionTexture)
-    TextureMap sheenColorMap;     // multiplies sheenColor
-    TextureMap sheenRoughnessMap; // A multiplies sheenRoughness
-    std::string name;
-
-    bool isEmissive() const { return !isBlack(emission); }
-    bool hasCutout() const { return alphaMap.used(); }
-    bool perturbsNormal() const { return normalMap.used() || bumpMap.used(); }
-    bool isTextured() const {
-        return kdMap.used() || ksMap.used() || roughnessMap.used() || metallicMap.used() || perturbsNormal() ||
-               emissionMap.used() || vertexColors || clearcoatMap.used() || clearcoatRoughnessMap.used() ||
-               clearcoatNormalMap.used() || specularMap.used() || transmissionMap.used() ||
-               sheenColorMap.used() || sheenRoughnessMap.used();
-    }
 };
 
 // A file a scene was made from, with the hash of the bytes pt read from it (io/input_file.h):
