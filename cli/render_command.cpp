@@ -208,6 +208,14 @@ void parseResolution(const std::string& v, int& w, int& h) {
     h = int(b);
 }
 
+// An option whose value names one of a setting's values.
+template <typename E, size_t N>
+void setNamed(Args& args, const std::string& opt, const NamedValue<E> (&table)[N], E& value) {
+    std::string v = args.value(opt);
+    if (!valueNamed(table, v, value))
+        throw UsageError("option --" + opt + ": expected " + namesOf(table) + ", got \"" + v + "\"");
+}
+
 RenderArgs parseArgs(int argc, char** argv) {
     RenderArgs r;
     Args args(argc, argv, 1);
@@ -251,27 +259,13 @@ RenderArgs parseArgs(int argc, char** argv) {
         } else if (opt == "max-depth") {
             r.settings.maxDepth = int(args.integer(opt, 0, 100000));
         } else if (opt == "light-sampling") {
-            std::string v = args.value(opt);
-            if (v == "mis") r.settings.lightSampling = LightSampling::Mis;
-            else if (v == "nee") r.settings.lightSampling = LightSampling::Nee;
-            else if (v == "bsdf") r.settings.lightSampling = LightSampling::Bsdf;
-            else throw UsageError("option --light-sampling: expected mis, nee or bsdf, got \"" + v + "\"");
+            setNamed(args, opt, kLightSamplingNames, r.settings.lightSampling);
         } else if (opt == "light-choice") {
-            std::string v = args.value(opt);
-            if (v == "auto") r.settings.lightChoice = LightChoice::Auto;
-            else if (v == "power") r.settings.lightChoice = LightChoice::Power;
-            else if (v == "tree") r.settings.lightChoice = LightChoice::Tree;
-            else throw UsageError("option --light-choice: expected auto, power or tree, got \"" + v + "\"");
+            setNamed(args, opt, kLightChoiceNames, r.settings.lightChoice);
         } else if (opt == "hemisphere") {
-            std::string v = args.value(opt);
-            if (v == "cosine") r.settings.hemisphere = HemisphereSampling::Cosine;
-            else if (v == "uniform") r.settings.hemisphere = HemisphereSampling::Uniform;
-            else throw UsageError("option --hemisphere: expected cosine or uniform, got \"" + v + "\"");
+            setNamed(args, opt, kHemisphereNames, r.settings.hemisphere);
         } else if (opt == "sampler") {
-            std::string v = args.value(opt);
-            if (v == "sobol") r.settings.sampler = SamplerKind::Sobol;
-            else if (v == "random") r.settings.sampler = SamplerKind::Random;
-            else throw UsageError("option --sampler: expected sobol or random, got \"" + v + "\"");
+            setNamed(args, opt, kSamplerNames, r.settings.sampler);
         } else if (opt == "aov") {
             r.aovs = parseAovList(args.value(opt));
         } else if (opt == "denoise") {
@@ -487,18 +481,15 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-const char* name(LightSampling m) { return m == LightSampling::Mis ? "mis" : m == LightSampling::Nee ? "nee" : "bsdf"; }
-const char* name(LightChoice c) { return c == LightChoice::Auto ? "auto" : c == LightChoice::Power ? "power" : "tree"; }
-const char* name(HemisphereSampling h) { return h == HemisphereSampling::Cosine ? "cosine" : "uniform"; }
-const char* name(SamplerKind k) { return k == SamplerKind::Sobol ? "sobol" : "random"; }
 
 // Every option that changes the image, so that a file says how to make it again.
 // The job's fields (render/render_job.h) and what else describes the scene and its options.
 void addJobMetadata(Image& image, const RenderArgs& args, const Scene& scene, size_t cameraIndex,
                     const std::string& sceneHash) {
-    auto text = [&](const char* k, const std::string& v) { image.metadata.push_back(ImageAttribute::string(k, v)); };
-    auto integer = [&](const char* k, long long v) { image.metadata.push_back(ImageAttribute::integerValue(k, v)); };
-    auto real = [&](const char* k, double v) { image.metadata.push_back(ImageAttribute::floatValue(k, v)); };
+    JobMetadataWriter write(image);
+    auto text = [&](const char* k, const std::string& v) { write.text(k, v); };
+    auto integer = [&](const char* k, long long v) { write.integer(k, v); };
+    auto real = [&](const char* k, double v) { write.real(k, v); };
     std::error_code ec;
     std::string resolved = std::filesystem::weakly_canonical(std::filesystem::absolute(scene.path, ec), ec).string();
     text("Software", "pt " PT_VERSION);
@@ -527,10 +518,10 @@ void addJobMetadata(Image& image, const RenderArgs& args, const Scene& scene, si
     integer("pt:sppRequested", args.spp);
     integer("pt:seed", (long long)args.settings.seed);
     integer("pt:maxDepth", args.settings.maxDepth);
-    text("pt:sampler", name(args.settings.sampler));
-    text("pt:lightSampling", name(args.settings.lightSampling));
-    text("pt:lightChoice", name(args.settings.lightChoice));
-    text("pt:hemisphere", name(args.settings.hemisphere));
+    text("pt:sampler", nameOf(kSamplerNames, args.settings.sampler));
+    text("pt:lightSampling", nameOf(kLightSamplingNames, args.settings.lightSampling));
+    text("pt:lightChoice", nameOf(kLightChoiceNames, args.settings.lightChoice));
+    text("pt:hemisphere", nameOf(kHemisphereNames, args.settings.hemisphere));
     real("pt:clamp", args.settings.clamp);
     real("pt:exposure", args.exposure);
     if (args.budget.adaptive()) { // a part must be resumed and merged with the same rule

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -49,6 +50,44 @@ TEST(JobIdentity, IsTheContentPtReadNotWhatThePathHoldsLater) {
     writeScene(root / "c", "env_marker.exr");
     EXPECT_EQ(loadedHash(root / "c"), marker);
     fs::remove_all(root);
+}
+
+// Every identity field, differing alone between two parts, is the one a merge names; a field
+// that only describes the job differs without splitting it.
+TEST(JobIdentity, EachIdentityFieldDifferingIsNamed) {
+    auto job = [](const char* changed) {
+        Image image;
+        JobMetadataWriter writer(image);
+        for (size_t i = 0; i < kJobFieldCount; ++i)
+            writer.text(kJobFields[i].name, std::strcmp(kJobFields[i].name, changed) == 0 ? "b" : "a");
+        return image;
+    };
+    Image base = job("");
+    size_t identities = 0;
+    for (size_t i = 0; i < kJobFieldCount; ++i) {
+        std::string field, a, b;
+        bool differs = jobMismatch(base, job(kJobFields[i].name), field, a, b);
+        if (kJobFields[i].role == JobFieldRole::Identity) {
+            ++identities;
+            EXPECT_TRUE(differs) << kJobFields[i].name;
+            EXPECT_EQ(field, kJobFields[i].name);
+            EXPECT_EQ(a + b, "ab");
+        } else {
+            EXPECT_FALSE(differs) << kJobFields[i].name << " only describes the job, yet " << field << " differed";
+        }
+    }
+    EXPECT_EQ(identities, jobFields().size());
+    EXPECT_GE(identities, 20u);
+}
+
+TEST(JobIdentity, AFieldNotInTheTableCannotBeWritten) {
+    Image image;
+    JobMetadataWriter writer(image);
+    EXPECT_THROW(writer.real("pt:newSetting", 1.0), std::logic_error);
+    EXPECT_TRUE(image.metadata.empty());
+    writer.integer("pt:seed", 7);
+    ASSERT_EQ(image.metadata.size(), 1u);
+    EXPECT_EQ(attributeText(image, "pt:seed"), "7");
 }
 
 } // namespace

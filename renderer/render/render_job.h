@@ -1,6 +1,7 @@
 // What makes renders parts of one job, so that their samples may be merged: the same value of
-// every sample of every pixel. pt render writes these fields into every EXR's metadata; pt merge
-// and pt render --resume compare them and name the first that differs.
+// every sample of every pixel. pt render writes a job's fields into every EXR's metadata through
+// JobMetadataWriter; pt merge and pt render --resume compare the identity fields and name the
+// first that differs.
 #pragma once
 
 #include "image/image_io.h"
@@ -11,8 +12,33 @@
 
 namespace pt {
 
-// The metadata names of a job's identity, in the order a mismatch is reported.
+// Every field of a job that pt render writes, once, with whether parts must agree on it. A field
+// only describes where it cannot change a sample: a path that differs between machines (the
+// content is pt:sceneHash), a value derived from an identity field.
+enum class JobFieldRole : uint8_t { Identity, Describes };
+struct JobField {
+    const char* name;
+    JobFieldRole role;
+};
+extern const JobField kJobFields[];
+extern const size_t kJobFieldCount;
+
+// The identity fields' names, in the order a mismatch is reported.
 const std::vector<std::string>& jobFields();
+
+// Writes a job's fields into an image's metadata. A name not in kJobFields is a programming
+// error (std::logic_error): no setting can be written without saying whether parts must agree.
+class JobMetadataWriter {
+public:
+    explicit JobMetadataWriter(Image& image) : image_(image) {}
+    void text(const char* name, const std::string& value);
+    void integer(const char* name, long long value);
+    void real(const char* name, double value);
+
+private:
+    void check(const char* name) const;
+    Image& image_;
+};
 
 // The first job field whose value differs between two images' metadata (a field absent from both
 // is equal); false when they are one job.

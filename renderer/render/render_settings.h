@@ -2,9 +2,11 @@
 #pragma once
 
 #include "light/light_tree.h"
-#include "material/lab_bsdf.h"
+#include "material/bsdf_sample.h"
 
 #include <cstdint>
+#include <string>
+#include <string_view>
 
 namespace pt {
 
@@ -14,6 +16,42 @@ enum class LightSampling { Mis, Nee, Bsdf };
 
 // Where sample values come from: independent random numbers, or Owen-scrambled Sobol points.
 enum class SamplerKind { Random, Sobol };
+
+// Each setting's values by the name the command line and the EXR metadata give them: one table
+// per enum, read both ways.
+template <typename E>
+struct NamedValue {
+    E value;
+    const char* name;
+};
+inline constexpr NamedValue<LightSampling> kLightSamplingNames[] = {
+    {LightSampling::Mis, "mis"}, {LightSampling::Nee, "nee"}, {LightSampling::Bsdf, "bsdf"}};
+inline constexpr NamedValue<LightChoice> kLightChoiceNames[] = {
+    {LightChoice::Auto, "auto"}, {LightChoice::Power, "power"}, {LightChoice::Tree, "tree"}};
+inline constexpr NamedValue<HemisphereSampling> kHemisphereNames[] = {
+    {HemisphereSampling::Cosine, "cosine"}, {HemisphereSampling::Uniform, "uniform"}};
+inline constexpr NamedValue<SamplerKind> kSamplerNames[] = {{SamplerKind::Sobol, "sobol"}, {SamplerKind::Random, "random"}};
+
+template <typename E, size_t N>
+const char* nameOf(const NamedValue<E> (&table)[N], E value) {
+    for (const NamedValue<E>& v : table)
+        if (v.value == value) return v.name;
+    return "?";
+}
+// Sets `value` from its name; false for a name not in the table.
+template <typename E, size_t N>
+bool valueNamed(const NamedValue<E> (&table)[N], std::string_view name, E& value) {
+    for (const NamedValue<E>& v : table)
+        if (name == v.name) return value = v.value, true;
+    return false;
+}
+// "a, b or c", for messages.
+template <typename E, size_t N>
+std::string namesOf(const NamedValue<E> (&table)[N]) {
+    std::string s;
+    for (size_t i = 0; i < N; ++i) s += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + std::string(table[i].name);
+    return s;
+}
 
 struct RenderSettings {
     int maxDepth = 16;   // most scattering events on a path: 0 = emitters seen directly, 1 = direct light
