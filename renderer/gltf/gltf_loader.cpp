@@ -1,110 +1,28 @@
+// The glTF loader's own job: the node hierarchy, flattened into the scene's world-space triangles
+// with their attributes. The file policy is gltf_file.cpp, materials and textures
+// gltf_materials.cpp, cameras and lights gltf_cameras_lights.cpp.
 #include "gltf/gltf_loader.h"
 
 #include "gltf/gltf_accessors.h"
-#include "gltf/gltf_document.h"
-#include "io/input_file.h"
-#include "core/system.h"
-#include "io/scene_limits.h"
-#include "scene/complete_scene.h"
+#include "gltf/gltf_cameras_lights.h"
+#include "gltf/gltf_file.h"
+#include "gltf/gltf_materials.h"
 #include "core/math.h"
 #include "core/system.h"
-#include "texture/texture_io.h"
+#include "io/input_file.h"
+#include "io/scene_limits.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
-#include <map>
-#include <sys/stat.h>
 
 namespace pt {
 namespace {
 
-constexpr const char* kSupportedExtensions[] = {
-    "KHR_materials_clearcoat", "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_sheen",
-    "KHR_materials_specular", "KHR_materials_unlit",
-    "KHR_materials_transmission",
-    "KHR_materials_volume", "KHR_lights_punctual", "KHR_mesh_quantization", "KHR_texture_transform",
-};
-
-// Lumens per watt: glTF lights are photometric (candela, lux), pt's radiometric. Blender's glTF
-// importer divides by the same 683, so a scene is as bright in both.
-constexpr double kLumensPerWatt = 683.0;
-
 using tinygltf::Model;
-
-// Images are not decoded by tinygltf (its stb build is not ours): the loader callback keeps the
-// bytes of data-URI images, and the loader reads the others itself, from their buffer views or
-// files, and has OpenImageIO decode the ones a material uses. A buffer-view image's bytes are not
-// touched here: tinygltf passes a pointer it has not checked.
-bool keepImageBytes(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
-                    const unsigned char* bytes, int size, void* user) {
-    auto* kept = static_cast<std::vector<std::vector<unsigned char>>*>(user);
-    if (image->bufferView >= 0) return true;
-    if (index < 0 || size < 0 || index > (1 << 24)) return false;
-    if (size_t(index) >= kept->size()) kept->resize(size_t(index) + 1);
-    (*kept)[size_t(index)].assign(bytes, bytes + size);
-    image->as_is = true;
-    return true;
-}
-
-// A URI's path as tinygltf decodes it (%XX escapes, and '+' as a space), so that the loader finds
-// an image where tinygltf finds a buffer of the same name.
-std::string decodeUri(const std::string& uri) {
-    auto hex = [](char c) { return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : 0; };
-    std::string path;
-    for (size_t i = 0; i < uri.size(); ++i) {
-        if (uri[i] == '+') path += ' ';
-        else if (uri[i] == '%' && i + 2 < uri.size()) path += char(hex(uri[i + 1]) << 4 | hex(uri[i + 2])), i += 2;
-        else path += uri[i];
-    }
-    return path;
-}
-
-// tinygltf reads a buffer's file through these callbacks: only a regular file, only beside the
-// .gltf (tinygltf would also look in the working directory), and only of a size some buffer
-// declares (byteLength, which tinygltf then checks). Image files are refused here, which tinygltf
-// takes as a warning: the loader reads the images a material uses itself, header first.
-struct ExternalFiles {
-    std::string folder;                  // the .gltf's folder, as tinygltf joins it to a URI
-    std::vector<uint64_t> bufferLengths; // byteLength of each buffer held in a file
-    uint64_t bytesLeft;                  // what all of them may still take (many buffers may name one file)
-    std::vector<SourceFile> read;        // the files read, with the hash of their bytes
-};
-
-bool externalFileExists(const std::string& path, void* user) {
-    const auto& files = *static_cast<const ExternalFiles*>(user);
-    struct stat st {};
-    std::string prefix = files.folder.back() == '/' ? files.folder : files.folder + "/";
-    return path.rfind(prefix, 0) == 0 && stat(path.c_str(), &st) == 0;
-}
-
-std::string pathAsGiven(const std::string& path, void*) { return path; } // no ~ or $VAR expansion
-
-bool readExternalFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
-    auto& files = *static_cast<ExternalFiles*>(user);
-    struct stat st {};
-    if (stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
-        std::find(files.bufferLengths.begin(), files.bufferLengths.end(), uint64_t(st.st_size)) == files.bufferLengths.end()) {
-        if (err) *err += "its " + std::to_string(st.st_size) + " bytes are no buffer's byteLength";
-        return false;
-    }
-    uint64_t largest = files.bufferLengths.empty() ? 0 : *std::max_element(files.bufferLengths.begin(), files.bufferLengths.end());
-    std::string error = readRegularFile(path, std::min(largest, files.bytesLeft), *out);
-    if (!error.empty() && err) *err += error + (largest > files.bytesLeft ? " (its buffers together may take half this machine's memory)" : "");
-    files.bytesLeft -= std::min<uint64_t>(files.bytesLeft, out->size());
-    if (error.empty()) files.read.push_back({path, contentHash(out->data(), out->size())});
-    return error.empty();
-}
-
-bool writeNothing(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
-    if (err) *err += "pt writes no glTF files";
-    return false;
-}
 
 glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& what) {
     if (n.matrix.size() == 16) {
@@ -133,44 +51,20 @@ glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& what) {
     return m;
 }
 
-// A sampler's wrapS or wrapT (the document check allows only these three values).
-TextureWrap wrapOf(int mode) {
-    if (mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return TextureWrap::Clamp;
-    if (mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return TextureWrap::Mirror;
-    return TextureWrap::Repeat;
-}
-
 // v / |v| in double, or 0 for a zero vector.
 glm::dvec3 unitOrZero(const glm::dvec3& v) {
     double length = glm::length(v);
     return length > 0.0 && std::isfinite(length) ? v / length : glm::dvec3(0.0);
 }
 
-Spectrum colorOf(const std::vector<double>& v, Spectrum fallback) {
-    return v.size() >= 3 ? Spectrum(float(v[0]), float(v[1]), float(v[2])) : fallback;
-}
-
-// A number or a colour of an extension's object (its type and range checked by gltf_document),
-// or `fallback` where it is absent.
-float extensionNumber(const tinygltf::Value& object, const char* key, float fallback) {
-    return object.Has(key) ? float(object.Get(key).GetNumberAsDouble()) : fallback;
-}
-Spectrum extensionColor(const tinygltf::Value& object, const char* key, Spectrum fallback) {
-    if (!object.Has(key)) return fallback;
-    const tinygltf::Value& v = object.Get(key);
-    return Spectrum(float(v.Get(0).GetNumberAsDouble()), float(v.Get(1).GetNumberAsDouble()), float(v.Get(2).GetNumberAsDouble()));
-}
 
 class GltfReader {
 public:
     GltfReader(const std::string& path, const Model& model, std::vector<std::vector<unsigned char>>& images, Scene& scene,
                Warnings& warnings)
-        : path_(path), model_(model), images_(images), scene_(scene), warnings_(warnings) {}
+        : path_(path), model_(model), scene_(scene), warnings_(warnings), materials_(path, model, images, scene, warnings) {}
 
     void read() {
-        materialOf_.assign(model_.materials.size(), ~0u);
-        uvSet_.assign(model_.materials.size(), 0);
-        readsTextures_.assign(model_.materials.size(), 0);
         if (model_.scenes.empty()) {
             // No scene: every root node, as viewers do.
             std::vector<char> child(model_.nodes.size(), 0);
@@ -211,10 +105,10 @@ private:
                 for (int r = 0; r < 4; ++r)
                     if (!std::isfinite(world[c][r])) throw LoadError(what + ": its transform is not finite");
             if (node.mesh >= 0) addMesh(node.mesh, world, what);
-            if (node.camera >= 0) addCamera(node.camera, world, what);
+            if (node.camera >= 0) gltf::addCamera(model_, path_, node.camera, world, what, scene_);
             auto light = node.extensions.find("KHR_lights_punctual");
             if (light != node.extensions.end() && light->second.Has("light"))
-                addLight(light->second.Get("light").GetNumberAsInt(), world, what);
+                gltf::addLight(model_, path_, light->second.Get("light").GetNumberAsInt(), world, what, scene_);
             for (int c : node.children) stack.emplace_back(c, world);
         }
     }
@@ -253,10 +147,10 @@ private:
         if (int a = attribute(prim, "TANGENT"); a >= 0) tangents = gltf::readFloats(model_, a, 4, {F, B, S}, what + " TANGENT");
         // Texture coordinates: the set the material's textures read (TEXCOORD_0 or _1).
         int colorAccessor = attribute(prim, "COLOR_0");
-        uint32_t material = materialFor(prim.material, what, colorAccessor >= 0);
-        const std::string uvName = "TEXCOORD_" + std::to_string(uvSetOf(prim.material));
+        uint32_t material = materials_.materialFor(prim.material, what, colorAccessor >= 0);
+        const std::string uvName = "TEXCOORD_" + std::to_string(materials_.uvSetOf(prim.material));
         if (int a = attribute(prim, uvName.c_str()); a >= 0) uvs = gltf::readFloats(model_, a, 2, {F, B, UB, S, US}, what + " " + uvName);
-        else if (readsTextures(prim.material))
+        else if (materials_.readsTextures(prim.material))
             throw LoadError(what + ": its material " + std::to_string(prim.material) + " reads textures through " + uvName +
                             ", which the primitive does not have");
         if (colorAccessor >= 0) {
@@ -372,420 +266,14 @@ private:
         }
     }
 
-    // The scene's texture for glTF texture `index`, decoded as colour (sRGB) or data.
-    int texture(int index, bool colour, const std::string& what) {
-        if (index < 0 || size_t(index) >= model_.textures.size())
-            throw LoadError(what + ": texture " + std::to_string(index) + " does not exist");
-        int image = model_.textures[size_t(index)].source;
-        if (image < 0 || size_t(image) >= model_.images.size())
-            throw LoadError(what + ": texture " + std::to_string(index) + " has no image (source " + std::to_string(image) + ")");
-        auto key = std::make_pair(image, colour);
-        if (auto it = decoded_.find(key); it != decoded_.end()) return it->second;
-        const tinygltf::Image& img = model_.images[size_t(image)];
-        // tinygltf keeps the URI of a file image only (a data URI's bytes came through keepImageBytes).
-        bool inFile = img.bufferView < 0 && !img.uri.empty() && img.uri.rfind("data:", 0) != 0;
-        std::string name = inFile ? (std::filesystem::path(path_).parent_path() / decodeUri(img.uri)).string()
-                                  : path_ + " image " + std::to_string(image);
-        std::string format = img.mimeType == "image/jpeg" ? ".jpg" : img.mimeType == "image/png" ? ".png" : "";
-        if (format.empty()) {
-            std::string ext = std::filesystem::path(img.uri).extension().string();
-            format = ext.empty() ? ".png" : ext;
-        }
-        Texture t;
-        std::string error;
-        bool tooLarge, read;
-        double budget = textureMemoryBudget() - scene_.textures->bytes();
-        if (size_t(image) < images_.size() && !images_[size_t(image)].empty()) // bytes tinygltf decoded (a data URI)
-            read = readTextureFromMemory(images_[size_t(image)], name, format, colour, t, error, budget, tooLarge);
-        else if (img.bufferView >= 0)
-            read = readTextureFromMemory(gltf::bufferViewBytes(model_, img.bufferView, what + ", image " + std::to_string(image)),
-                                         name, format, colour, t, error, budget, tooLarge);
-        else if (inFile)
-            read = readTexture(name, colour, t, error, budget, tooLarge); // the file's bytes, hashed
-        else
-            throw LoadError(what + ": image " + std::to_string(image) + " has no data");
-        if (!read) throw LoadError(what + ": image " + std::to_string(image) + ": " + error);
-        if (t.sourceHash != 0) scene_.sources.push_back({name, t.sourceHash});
-        int cached = scene_.textures->add(std::move(t));
-        decoded_[key] = cached;
-        return cached;
-    }
-
-    // A texture reference inside a material extension (a JSON object, not tinygltf's TextureInfo):
-    // an unused map where `key` is absent. A normal texture's scale becomes bumpScale.
-    TextureMap extensionTexture(const tinygltf::Value& ext, const char* key, const std::string& what, bool colour = false) {
-        if (!ext.Has(key)) return TextureMap{};
-        const tinygltf::Value& info = ext.Get(key);
-        tinygltf::ExtensionMap extensions;
-        if (info.Has("extensions"))
-            for (const std::string& name : info.Get("extensions").Keys()) extensions[name] = info.Get("extensions").Get(name);
-        int texCoord = info.Has("texCoord") ? info.Get("texCoord").GetNumberAsInt() : 0;
-        TextureMap map = textureMap(info.Get("index").GetNumberAsInt(), texCoord, extensions, colour, what);
-        if (info.Has("scale")) map.bumpScale = normalScale(info.Get("scale").GetNumberAsDouble(), what + ": scale");
-        return map;
-    }
-
-    // A map that reads its texture's alpha, as the extensions' A-channel textures do; a texture
-    // without alpha has alpha 1 everywhere, so the map is dropped and its factor alone applies.
-    TextureMap alphaOf(TextureMap map) const {
-        if (!map.used() || !(*scene_.textures)[map.texture].hasAlpha()) return TextureMap{};
-        map.channel = TextureChannel::Alpha;
-        return map;
-    }
-
-    // A normal map needs three channels (x, y, z): one of one or two (grey, grey and alpha) is
-    // dropped with a warning naming it, as the MTL's norm does, instead of being read past its texels.
-    TextureMap normalMapOf(TextureMap map, const std::string& what) {
-        if (!map.used()) return map;
-        const Texture& t = (*scene_.textures)[map.texture];
-        if (t.channels >= 3) return map; // RGB, or RGB and alpha
-        warnings_.add(what + ": image \"" + t.path + "\" has " + std::to_string(t.channels) + " channel" +
-                      (t.channels == 1 ? "" : "s") + (t.hasAlpha() ? " (grey and alpha)" : " (grey)") +
-                      "; a normal map needs RGB, so it is ignored and the surface keeps its interpolated normals");
-        return TextureMap{};
-    }
-
-    // A normal texture's scale, refused (naming it as `label`) where the perturbed normal's length
-    // would overflow float.
-    static float normalScale(double scale, const std::string& label) {
-        if (!(std::abs(scale) <= kMaxNormalScale))
-            throw LoadError(label + " " + shortNumber(scale) + " is beyond +-1e6, where the perturbed normal's length "
-                            "overflows float");
-        return float(scale);
-    }
-
-    // A texture reference with its sampler's wrap modes and KHR_texture_transform (in pt's uv,
-    // whose v runs up where glTF's runs down: setGltfTransform).
-    TextureMap textureMap(int index, int texCoord, const tinygltf::ExtensionMap& extensions, bool colour,
-                          const std::string& what) {
-        TextureMap map;
-        map.texture = texture(index, colour, what);
-        const tinygltf::Texture& tex = model_.textures[size_t(index)];
-        if (tex.sampler >= 0 && size_t(tex.sampler) < model_.samplers.size()) {
-            const tinygltf::Sampler& s = model_.samplers[size_t(tex.sampler)];
-            map.wrapU = wrapOf(s.wrapS);
-            map.wrapV = wrapOf(s.wrapT);
-        }
-        Vec2 offset(0.0f), scale(1.0f);
-        float rotation = 0.0f;
-        auto t = extensions.find("KHR_texture_transform");
-        if (t != extensions.end()) {
-            const tinygltf::Value& v = t->second;
-            if (v.Has("offset") && v.Get("offset").ArrayLen() == 2)
-                offset = Vec2(float(v.Get("offset").Get(0).GetNumberAsDouble()), float(v.Get("offset").Get(1).GetNumberAsDouble()));
-            if (v.Has("scale") && v.Get("scale").ArrayLen() == 2)
-                scale = Vec2(float(v.Get("scale").Get(0).GetNumberAsDouble()), float(v.Get("scale").Get(1).GetNumberAsDouble()));
-            if (v.Has("rotation")) rotation = float(v.Get("rotation").GetNumberAsDouble());
-            if (v.Has("texCoord")) texCoord = v.Get("texCoord").GetNumberAsInt();
-        }
-        // One set of texture coordinates per material: the first texture's (0 or 1) serves all.
-        if (texCoord < 0 || texCoord > 1) {
-            warnOnce(warnedTexCoord_, what + ": TEXCOORD_" + std::to_string(texCoord) + " is not supported (0 and 1 are); "
-                                      "TEXCOORD_0 is used");
-            texCoord = 0;
-        }
-        if (materialUvSet_ < 0) materialUvSet_ = texCoord;
-        else if (texCoord != materialUvSet_)
-            warnOnce(warnedMixedSets_, what + ": reads TEXCOORD_" + std::to_string(texCoord) + " where the material's other "
-                                       "textures read TEXCOORD_" + std::to_string(materialUvSet_) + "; those are used");
-        if (!std::isfinite(offset.x) || !std::isfinite(offset.y) || !std::isfinite(scale.x) || !std::isfinite(scale.y) ||
-            !std::isfinite(rotation))
-            throw LoadError(what + ": KHR_texture_transform has a value that is not finite");
-        setGltfTransform(map, offset, rotation, scale);
-        return map;
-    }
-
-    // A 1 x 1 data texture of value 1, so that a constant coverage goes through the cutout path.
-    int constantTexture() {
-        if (constant_ < 0) {
-            Texture t = Texture::fromFloats(1, 1, 1, {1.0f}, false);
-            t.path = path_ + " (constant coverage)";
-            constant_ = scene_.textures->add(std::move(t));
-        }
-        return constant_;
-    }
-
-    // The scene's material for glTF material `index` (-1: the default), a copy that multiplies
-    // its base colour by COLOR_0 where the primitive has vertex colours.
-    uint32_t materialFor(int index, const std::string& where, bool vertexColors) {
-        uint32_t plain = plainMaterialFor(index, where);
-        if (!vertexColors) return plain;
-        auto [it, isNew] = withColors_.try_emplace(plain, uint32_t(scene_.materials.size()));
-        if (isNew) {
-            Material m = scene_.materials[plain];
-            m.vertexColors = true;
-            scene_.materials.push_back(m);
-        }
-        return it->second;
-    }
-
-    // The texture coordinate set (0 or 1) that material `index`'s textures read.
-    int uvSetOf(int index) const { return index >= 0 && size_t(index) < uvSet_.size() ? uvSet_[size_t(index)] : 0; }
-    // Whether material `index` has a texture (and so needs that set).
-    bool readsTextures(int index) const { return index >= 0 && size_t(index) < uvSet_.size() && readsTextures_[size_t(index)]; }
-
-    uint32_t plainMaterialFor(int index, const std::string& where) {
-        if (index < 0) {
-            if (defaultMaterial_ == ~0u) {
-                // The specification's default material: white, metallic 1, roughness 1.
-                Material m;
-                m.name = "default";
-                m.model = MaterialModel::MetalRough;
-                m.kd = Spectrum(1.0f);
-                m.metallic = 1.0f;
-                m.roughnessAlpha = 1.0f;
-                m.eta = 1.5f;
-                defaultMaterial_ = uint32_t(scene_.materials.size());
-                scene_.materials.push_back(m);
-            }
-            return defaultMaterial_;
-        }
-        if (size_t(index) >= model_.materials.size())
-            throw LoadError(where + ": material " + std::to_string(index) + " does not exist");
-        if (materialOf_[size_t(index)] != ~0u) return materialOf_[size_t(index)];
-        materialUvSet_ = -1;
-        const tinygltf::Material& g = model_.materials[size_t(index)];
-        std::string what = path_ + ": material " + std::to_string(index) + (g.name.empty() ? "" : " \"" + g.name + "\"");
-        const auto& pbr = g.pbrMetallicRoughness;
-        Material m;
-        m.name = g.name.empty() ? "material " + std::to_string(index) : g.name;
-        m.model = MaterialModel::MetalRough;
-        m.kd = colorOf(pbr.baseColorFactor, Spectrum(1.0f));
-        float opacity = pbr.baseColorFactor.size() == 4 ? float(pbr.baseColorFactor[3]) : 1.0f;
-        float metallic = float(pbr.metallicFactor), roughness = float(pbr.roughnessFactor);
-        auto unit = [&](float v, const char* name) {
-            if (!(v >= 0.0f && v <= 1.0f)) throw LoadError(what + ": " + name + " " + shortNumber(v) + " is outside [0, 1]");
-            return v;
-        };
-        for (int c = 0; c < 3; ++c) unit(m.kd[c], "baseColorFactor");
-        m.metallic = unit(metallic, "metallicFactor");
-        m.roughnessAlpha = sqr(unit(roughness, "roughnessFactor")); // alpha
-        unit(opacity, "baseColorFactor's alpha");
-        m.eta = 1.5f;
-        if (auto ior = g.extensions.find("KHR_materials_ior"); ior != g.extensions.end() && ior->second.Has("ior")) {
-            m.eta = float(ior->second.Get("ior").GetNumberAsDouble());
-            if (!(m.eta >= 1.0f && m.eta <= 10.0f)) throw LoadError(what + ": KHR_materials_ior ior " + shortNumber(m.eta) + " is outside [1, 10]");
-        }
-        if (auto e = g.extensions.find("KHR_materials_specular"); e != g.extensions.end()) {
-            std::string ext = what + " KHR_materials_specular";
-            m.specular = extensionNumber(e->second, "specularFactor", 1.0f);
-            m.ks = extensionColor(e->second, "specularColorFactor", Spectrum(1.0f));
-            if (!(maxComponent(m.ks) <= 1e6f))
-                throw LoadError(ext + ": specularColorFactor " + shortNumber(maxComponent(m.ks)) + " is beyond 1e6, pt's limit");
-            m.specularMap = alphaOf(extensionTexture(e->second, "specularTexture", ext + " specularTexture"));
-            m.ksMap = extensionTexture(e->second, "specularColorTexture", ext + " specularColorTexture", true);
-        }
-        if (auto e = g.extensions.find("KHR_materials_clearcoat"); e != g.extensions.end()) {
-            // Ranges and texture indices were checked with the document (gltf_document.cpp).
-            std::string ext = what + " KHR_materials_clearcoat";
-            m.clearcoat = extensionNumber(e->second, "clearcoatFactor", 0.0f);
-            m.clearcoatAlpha = sqr(extensionNumber(e->second, "clearcoatRoughnessFactor", 0.0f));
-            if (m.clearcoat > 0.0f) {
-                m.clearcoatMap = extensionTexture(e->second, "clearcoatTexture", ext + " clearcoatTexture");
-                m.clearcoatMap.channel = TextureChannel::R;
-                m.clearcoatRoughnessMap = extensionTexture(e->second, "clearcoatRoughnessTexture", ext + " clearcoatRoughnessTexture");
-                m.clearcoatRoughnessMap.channel = TextureChannel::G;
-                m.clearcoatNormalMap = normalMapOf(extensionTexture(e->second, "clearcoatNormalTexture", ext + " clearcoatNormalTexture"),
-                                                   ext + " clearcoatNormalTexture");
-            }
-        }
-        if (auto e = g.extensions.find("KHR_materials_sheen"); e != g.extensions.end()) {
-            // Ranges and texture indices were checked with the document.
-            std::string ext = what + " KHR_materials_sheen";
-            m.sheenColor = extensionColor(e->second, "sheenColorFactor", Spectrum(0.0f));
-            m.sheenRoughness = extensionNumber(e->second, "sheenRoughnessFactor", 0.0f);
-            if (maxComponent(m.sheenColor) > 0.0f) {
-                m.sheenColorMap = extensionTexture(e->second, "sheenColorTexture", ext + " sheenColorTexture", true);
-                m.sheenRoughnessMap = alphaOf(extensionTexture(e->second, "sheenRoughnessTexture", ext + " sheenRoughnessTexture"));
-            }
-        }
-        if (auto e = g.extensions.find("KHR_materials_transmission"); e != g.extensions.end()) {
-            std::string ext = what + " KHR_materials_transmission";
-            m.transparency = extensionNumber(e->second, "transmissionFactor", 0.0f);
-            if (m.transparency > 0.0f) {
-                m.transmissionMap = extensionTexture(e->second, "transmissionTexture", ext + " transmissionTexture");
-                m.transmissionMap.channel = TextureChannel::R;
-            }
-        }
-        if ((m.clearcoat > 0.0f || maxComponent(m.sheenColor) > 0.0f) && m.transparency > 0.0f)
-            warnOnce(warnedCoatOnTransmission_, what + ": KHR_materials_clearcoat and KHR_materials_sheen on a transmitting "
-                                                       "material are ignored (pt's transmission is the lab's refraction "
-                                                       "tree, without a coat or sheen)");
-        if (auto e = g.extensions.find("KHR_materials_volume"); e != g.extensions.end() && m.transparency > 0.0f) {
-            // Ranges were checked with the document. A thickness above 0 makes the mesh a volume's
-            // boundary; the thickness itself (and its texture) serves renderers without the
-            // geometry: pt measures the distance a path travels inside.
-            m.volume = extensionNumber(e->second, "thicknessFactor", 0.0f) > 0.0f;
-            float distance = extensionNumber(e->second, "attenuationDistance", kInf);
-            Spectrum color = extensionColor(e->second, "attenuationColor", Spectrum(1.0f));
-            if (m.volume && distance < kInf)
-                for (int c = 0; c < 3; ++c) m.attenuation[c] = std::min(-std::log(std::max(color[c], 1e-6f)) / distance, 1e30f);
-        }
-        if (m.transparency > 0.0f && !m.volume)
-            warnOnce(warnedThinWalled_, what + ": without KHR_materials_volume (or with thicknessFactor 0) the surface is "
-                                               "thin-walled: light passes through it unbent (Blender's importer refracts "
-                                               "it with the ior instead)");
-        if (pbr.baseColorTexture.index >= 0)
-            m.kdMap = textureMap(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions,
-                                 true, what + " baseColorTexture");
-        if (pbr.metallicRoughnessTexture.index >= 0) {
-            const auto& info = pbr.metallicRoughnessTexture;
-            m.roughnessMap = textureMap(info.index, info.texCoord, info.extensions, false, what + " metallicRoughnessTexture");
-            m.roughnessMap.channel = TextureChannel::G;
-            m.metallicMap = m.roughnessMap;
-            m.metallicMap.channel = TextureChannel::B;
-        }
-        if (g.normalTexture.index >= 0) {
-            m.normalMap = textureMap(g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions, false,
-                                     what + " normalTexture");
-            m.normalMap.bumpScale = normalScale(g.normalTexture.scale, what + ": normalTexture.scale");
-            m.normalMap = normalMapOf(m.normalMap, what + " normalTexture");
-        }
-        float strength = 1.0f;
-        if (auto e = g.extensions.find("KHR_materials_emissive_strength");
-            e != g.extensions.end() && e->second.Has("emissiveStrength"))
-            strength = float(e->second.Get("emissiveStrength").GetNumberAsDouble());
-        if (!(strength >= 0.0f && strength <= 1e12f)) throw LoadError(what + ": emissiveStrength " + shortNumber(strength) + " is out of range");
-        m.emission = colorOf(g.emissiveFactor, Spectrum(0.0f)) * strength;
-        if (!(m.emission.x >= 0.0f && m.emission.y >= 0.0f && m.emission.z >= 0.0f) || !isFinite(m.emission))
-            throw LoadError(what + ": emissiveFactor must be finite and not negative");
-        if (maxComponent(m.emission) > kMaxRadiance)
-            throw LoadError(what + ": emission " + shortNumber(maxComponent(m.emission)) +
-                            " is beyond 1e18, where samples and their variance overflow float");
-        if (g.emissiveTexture.index >= 0 && m.isEmissive())
-            m.emissionMap = textureMap(g.emissiveTexture.index, g.emissiveTexture.texCoord, g.emissiveTexture.extensions,
-                                       true, what + " emissiveTexture");
-
-        // KHR_materials_unlit: the base colour alone, seen by camera rays only (the rest of the
-        // material is not used; it neither lights nor shadows anything).
-        if (g.extensions.count("KHR_materials_unlit")) {
-            m.unlit = true;
-            m.emission = Spectrum(0.0f);
-            m.emissionMap = TextureMap{};
-        }
-        // Coverage: MASK cuts at alphaCutoff, BLEND is stochastic (rays pass 1 - alpha of the time).
-        std::string mode = g.alphaMode.empty() ? "OPAQUE" : g.alphaMode;
-        if (mode == "MASK" || mode == "BLEND") {
-            m.coverage = opacity;
-            if (mode == "MASK") m.alphaCutoff = float(g.alphaCutoff);
-            if (pbr.baseColorTexture.index >= 0 &&
-                (*scene_.textures)[texture(pbr.baseColorTexture.index, false, what + " baseColorTexture")].hasAlpha()) {
-                m.alphaMap = textureMap(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                                        pbr.baseColorTexture.extensions, false, what + " baseColorTexture");
-                m.alphaMap.channel = TextureChannel::Alpha;
-            } else if (mode == "BLEND" ? opacity < 1.0f : opacity < m.alphaCutoff) {
-                m.alphaMap.texture = constantTexture();
-            }
-        }
-        uvSet_[size_t(index)] = std::max(0, materialUvSet_);
-        readsTextures_[size_t(index)] = materialUvSet_ >= 0;
-        materialOf_[size_t(index)] = uint32_t(scene_.materials.size());
-        scene_.materials.push_back(m);
-        return materialOf_[size_t(index)];
-    }
-
-    void addCamera(int index, const glm::dmat4& world, const std::string& where) {
-        if (size_t(index) >= model_.cameras.size())
-            throw LoadError(where + ": camera " + std::to_string(index) + " does not exist");
-        const tinygltf::Camera& g = model_.cameras[size_t(index)];
-        std::string what = path_ + ": camera " + std::to_string(index);
-        Camera c;
-        c.name = g.name.empty() ? "camera " + std::to_string(index) : g.name;
-        glm::dvec3 eye(world * glm::dvec4(0, 0, 0, 1)), ahead(world * glm::dvec4(0, 0, -1, 0)), up(world * glm::dvec4(0, 1, 0, 0));
-        if (!(glm::length(ahead) > 0.0) || !(glm::length(glm::cross(ahead, up)) > 0.0))
-            throw LoadError(what + ": its node's transform collapses the view direction");
-        c.position = Vec3(eye);
-        c.target = Vec3(eye + glm::normalize(ahead));
-        c.up = Vec3(glm::normalize(up));
-        if (g.type == "perspective") {
-            double fov = g.perspective.yfov * 180.0 / M_PI;
-            if (!(fov > 0.0 && fov < 180.0)) throw LoadError(what + ": yfov " + shortNumber(g.perspective.yfov) + " must be in (0, pi)");
-            c.fovY = float(fov);
-            if (g.perspective.aspectRatio > 0.0) c.aspect = aspectOf(c, g.perspective.aspectRatio);
-        } else { // orthographic: gltf_document allows no other type
-            double ymag = std::abs(g.orthographic.ymag), xmag = std::abs(g.orthographic.xmag);
-            if (!(ymag > 0.0 && xmag > 0.0)) throw LoadError(what + ": xmag and ymag must not be zero");
-            // A value float loses (to 0, which means "not orthographic", or to a denormal) meets
-            // checkCamera's rule here, named as the file gives it.
-            if (float h = float(ymag); !(std::isnormal(h) && h <= kMaxCoordinate))
-                throw LoadError(path_ + ": camera \"" + c.name + "\": " + orthoHalfHeightProblem(ymag, c.position));
-            c.orthoHalfHeight = float(ymag);
-            c.aspect = aspectOf(c, xmag / ymag);
-        }
-        scene_.cameras.push_back(c);
-    }
-
-    // A camera's aspect ratio, checked in double: one that float rounds to 0 (which means "none
-    // given") or to infinity is refused as any other outside the range.
-    float aspectOf(const Camera& c, double aspect) const {
-        if (!(aspect >= 1.0 / kMaxAspect && aspect <= kMaxAspect))
-            throw LoadError(path_ + ": camera \"" + c.name + "\": its aspect ratio " + shortNumber(aspect) +
-                            " is outside [1/65536, 65536]");
-        return float(aspect);
-    }
-
-    void addLight(int index, const glm::dmat4& world, const std::string& where) {
-        if (index < 0 || size_t(index) >= model_.lights.size())
-            throw LoadError(where + ": light " + std::to_string(index) + " does not exist");
-        const tinygltf::Light& g = model_.lights[size_t(index)];
-        std::string what = path_ + ": light " + std::to_string(index) + (g.name.empty() ? "" : " \"" + g.name + "\"");
-        Spectrum color = colorOf(g.color, Spectrum(1.0f)); // in [0, 1], as gltf_document checked
-        if (!(g.intensity < 1e15)) throw LoadError(what + ": intensity " + shortNumber(g.intensity) + " is beyond 1e15, pt's limit");
-        glm::dvec3 at(world * glm::dvec4(0, 0, 0, 1)), ahead(world * glm::dvec4(0, 0, -1, 0));
-        if (g.type == "directional") {
-            if (!(glm::length(ahead) > 0.0)) throw LoadError(what + ": its node's transform collapses its direction");
-            DirectionalLight d;
-            d.name = g.name;
-            d.direction = Vec3(glm::normalize(-ahead)); // towards the light
-            d.irradiance = color * float(g.intensity / kLumensPerWatt); // lux to W/m^2
-            scene_.directionalLights.push_back(d);
-            return;
-        }
-        LocalLight l;
-        l.name = "light " + std::to_string(index) + (g.name.empty() ? "" : " " + g.name);
-        l.center = Vec3(at);
-        l.radius = 0.0f;
-        l.intensity = color * float(g.intensity / kLumensPerWatt); // candela to W/sr
-        l.range = float(g.range);
-        if (g.range > 0.0 && !(l.range > 0.0f && std::isfinite(l.range)))
-            throw LoadError(what + ": range " + shortNumber(g.range) + " underflows float (0 would mean no range)");
-        l.source = path_ + ": ";
-        l.intensityKeyword = "intensity";
-        if (g.type == "spot") {
-            double inner = g.spot.innerConeAngle, outer = g.spot.outerConeAngle;
-            if (!(inner >= 0.0 && inner < outer && outer <= M_PI / 2))
-                throw LoadError(what + ": spot cone angles must satisfy 0 <= inner < outer <= pi/2");
-            if (!(glm::length(ahead) > 0.0)) throw LoadError(what + ": its node's transform collapses its direction");
-            l.spotDirection = Vec3(glm::normalize(ahead));
-            l.cosInner = float(std::cos(inner));
-            l.cosOuter = float(std::cos(outer));
-            // In float the cone must still be a cone: a narrower one is a point light in disguise.
-            if (!(l.cosOuter < l.cosInner))
-                throw LoadError(what + ": spot cone angles " + shortNumber(inner) + " and " + shortNumber(outer) +
-                                " have the same cosine in float; make the outer cone wider");
-        }
-        scene_.lights.push_back(l);
-    }
-
     const std::string& path_;
     const Model& model_;
-    std::vector<std::vector<unsigned char>>& images_;
     Scene& scene_;
     Warnings& warnings_;
-    std::vector<uint32_t> materialOf_;
-    std::map<uint32_t, uint32_t> withColors_; // a material's copy for primitives with COLOR_0
-    std::vector<int> uvSet_;                   // per glTF material, the TEXCOORD set its textures read
-    std::vector<char> readsTextures_;          // per glTF material, whether it has any texture
-    int materialUvSet_ = -1;                   // while a material is read: its textures' set so far
-    uint32_t defaultMaterial_ = ~0u;
+    gltf::GltfMaterials materials_;
     std::vector<char> visited_;
-    std::map<std::pair<int, bool>, int> decoded_;
-    int constant_ = -1;
     size_t skippedPrimitives_ = 0;
-    bool warnedColor_ = false, warnedTexCoord_ = false, warnedBrightColors_ = false,
-         warnedTangentSign_ = false;
-    bool warnedMixedSets_ = false, warnedThinWalled_ = false,
-         warnedCoatOnTransmission_ = false;
+    bool warnedBrightColors_ = false, warnedTangentSign_ = false;
     void warnOnce(bool& warned, const std::string& message) {
         if (!warned) warnings_.add(message);
         warned = true;
@@ -794,10 +282,6 @@ private:
 };
 
 } // namespace
-
-bool gltfExtensionSupported(const std::string& name) {
-    return std::find(std::begin(kSupportedExtensions), std::end(kSupportedExtensions), name) != std::end(kSupportedExtensions);
-}
 
 Scene loadGltf(const std::string& path, Warnings& warnings) {
     std::vector<unsigned char> bytes;
@@ -811,57 +295,12 @@ Scene loadGltf(const std::string& path, Warnings& warnings) {
 
 Scene loadGltfFromMemory(const std::string& path, const std::vector<unsigned char>& bytes, bool binary,
                          Warnings& warnings) {
-    if (bytes.size() > 0xffffffffu) throw LoadError(path + ": larger than the 4 GB a glTF file can address");
-    gltf::DocumentFacts facts = gltf::checkGltfDocument(gltf::gltfJson(bytes, binary, path), binary, path);
-    // Each buffer's file, looked at before tinygltf reads it: a regular file of the declared size,
-    // and all of them within half the memory. (The callbacks below refuse anything else again.)
-    std::vector<uint64_t> lengths;
-    double total = 0.0;
-    for (const auto& b : facts.fileBuffers) {
-        std::string file = (std::filesystem::path(path).parent_path() / decodeUri(b.uri)).string();
-        std::string what = path + ": buffer " + std::to_string(b.index) + ": \"" + file + "\" ";
-        struct stat st {};
-        if (stat(file.c_str(), &st) != 0) throw LoadError(what + "cannot be opened: " + std::strerror(errno));
-        if (!S_ISREG(st.st_mode)) throw LoadError(what + "is not a regular file (a folder, device or pipe)");
-        if (uint64_t(st.st_size) != b.length)
-            throw LoadError(what + "has " + std::to_string(st.st_size) + " bytes; its byteLength says " + std::to_string(b.length));
-        if ((total += double(b.length)) > 0.5 * physicalMemoryBytes())
-            throw LoadError(what + "brings the buffers to " + shortNumber(total / 1e9) + " GB, more than half this machine's memory");
-        lengths.push_back(b.length);
-    }
-    tinygltf::Model model;
-    tinygltf::TinyGLTF loader;
-    std::vector<std::vector<unsigned char>> images;
-    loader.SetImageLoader(keepImageBytes, &images);
-    std::string base = std::filesystem::path(path).parent_path().string();
-    if (base.empty()) base = ".";
-    ExternalFiles files{base, lengths, uint64_t(0.5 * physicalMemoryBytes()), {}};
-    loader.SetFsCallbacks(tinygltf::FsCallbacks{externalFileExists, pathAsGiven, readExternalFile, writeNothing, &files});
-    std::string err, warn;
-    bool ok = false;
-    try {
-        ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), base)
-                    : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
-                                                 unsigned(bytes.size()), base);
-    } catch (const std::exception& e) {
-        throw LoadError(path + ": not a valid glTF file: " + e.what());
-    }
-    if (!ok) {
-        while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
-        throw LoadError(path + ": " + (err.empty() ? "cannot be read as glTF" : err));
-    }
-    for (const std::string& e : model.extensionsRequired)
-        if (!gltfExtensionSupported(e))
-            throw LoadError(path + ": requires the extension " + e + ", which pt does not support");
-    for (const std::string& e : model.extensionsUsed)
-        if (!gltfExtensionSupported(e))
-            warnings.add(path + ": uses the extension " + e + ", which pt ignores");
-
+    gltf::GltfFile file = gltf::readGltfFile(path, bytes, binary, warnings);
     Scene scene;
     scene.path = path;
     scene.sources.push_back({path, contentHash(bytes.data(), bytes.size())});
-    scene.sources.insert(scene.sources.end(), files.read.begin(), files.read.end());
-    GltfReader(path, model, images, scene, warnings).read();
+    scene.sources.insert(scene.sources.end(), file.buffers.begin(), file.buffers.end());
+    GltfReader(path, file.model, file.images, scene, warnings).read();
     return scene;
 }
 
