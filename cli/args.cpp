@@ -18,6 +18,16 @@ Args::Args(int argc, char** argv, int first) {
     }
 }
 
+bool Args::next(std::string& name, std::vector<std::string>& positional) {
+    while (!done()) {
+        if (nextOption(name)) return true;
+        positional.push_back(this->positional());
+    }
+    // "--flag=value" as the last argument, of an option that takes none.
+    if (hasPending_) throw UsageError("option " + spelled_ + " does not take a value");
+    return false;
+}
+
 bool Args::nextOption(std::string& name) {
     if (hasPending_) throw UsageError("option " + spelled_ + " does not take a value");
     if (pos_ >= endOfOptions_) return false;

@@ -21,10 +21,9 @@ class Args {
 public:
     Args(int argc, char** argv, int first);
 
-    bool done() const { return pos_ >= args_.size(); }
-    // If the next argument is an option, returns its name without dashes (and splits "=value").
-    bool nextOption(std::string& name);
-    std::string positional();
+    // The next option's name without dashes (its "=value" kept for value()), after adding the
+    // positional arguments before it to `positional`; false once every argument is read.
+    bool next(std::string& name, std::vector<std::string>& positional);
     std::string value(const std::string& option);
     long long integer(const std::string& option, long long lo, long long hi);
     double number(const std::string& option, double lo, double hi); // finite, in [lo, hi]
@@ -32,6 +31,11 @@ public:
     std::string spelled(const std::string& option) const;
 
 private:
+    bool done() const { return pos_ >= args_.size(); }
+    // If the next argument is an option, returns its name without dashes (and splits "=value").
+    bool nextOption(std::string& name);
+    std::string positional();
+
     std::vector<std::string> args_;
     size_t pos_ = 0;
     std::string pendingOption_, pendingValue_, spelled_;

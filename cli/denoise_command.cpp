@@ -59,12 +59,8 @@ int denoiseCommand(int argc, char** argv) {
     try {
         Args args(argc, argv, 1);
         std::vector<std::string> positional;
-        while (!args.done()) {
-            std::string opt;
-            if (!args.nextOption(opt)) {
-                positional.push_back(args.positional());
-                continue;
-            }
+        std::string opt;
+        while (args.next(opt, positional)) {
             if (opt == "h" || opt == "help") {
                 std::fputs(kDenoiseUsage, stdout);
                 return 0;

@@ -93,12 +93,8 @@ int diffCommand(int argc, char** argv) {
     OutputFile heatmapFile, jsonFile;
     try {
         Args args(argc, argv, 1);
-        while (!args.done()) {
-            std::string opt;
-            if (!args.nextOption(opt)) {
-                files.push_back(args.positional());
-                continue;
-            }
+        std::string opt;
+        while (args.next(opt, files)) {
             if (opt == "h" || opt == "help") {
                 std::fputs(kDiffUsage, stdout);
                 return 0;

@@ -78,12 +78,8 @@ int mergeCommand(int argc, char** argv) {
     OutputFile output;
     try {
         Args args(argc, argv, 1);
-        while (!args.done()) {
-            std::string opt;
-            if (!args.nextOption(opt)) {
-                paths.push_back(args.positional());
-                continue;
-            }
+        std::string opt;
+        while (args.next(opt, paths)) {
             if (opt == "h" || opt == "help") {
                 std::fputs(kMergeUsage, stdout);
                 return 0;

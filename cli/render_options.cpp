@@ -168,12 +168,8 @@ RenderArgs parseRenderArgs(int argc, char** argv) {
     RenderArgs r;
     Args args(argc, argv, 1);
     std::vector<std::string> positional;
-    while (!args.done()) {
-        std::string opt;
-        if (!args.nextOption(opt)) {
-            positional.push_back(args.positional());
-            continue;
-        }
+    std::string opt;
+    while (args.next(opt, positional)) {
         if (opt == "h" || opt == "help") {
             std::fputs(kRenderUsage, stdout);
             std::exit(0);

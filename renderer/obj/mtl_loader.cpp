@@ -548,14 +548,7 @@ void MtlParser::parseLine(std::string_view keyword, Tokens& t, const LineReader&
 void parseMtl(std::string_view text, const std::string& path, Scene& scene,
               std::unordered_map<std::string, uint32_t>& materialIndex, Warnings& warnings) {
     MtlParser parser(path, scene, materialIndex, warnings);
-    LineReader lines(text, path);
-    std::string_view line;
-    while (lines.next(line)) {
-        Tokens t(line, lines);
-        if (t.empty()) continue;
-        std::string_view keyword = t.word();
-        parser.parseLine(keyword, t, lines);
-    }
+    parseLines(text, path, parser);
     parser.finishBlock();
 }
 

@@ -183,14 +183,7 @@ Scene parseObj(std::string_view text, const std::string& path, Warnings& warning
     ObjParser parser(path, warnings);
     parser.scene.path = path;
     parser.scene.sources.push_back({path, contentHash(text.data(), text.size())});
-    LineReader lines(text, path);
-    std::string_view line;
-    while (lines.next(line)) {
-        Tokens t(line, lines);
-        if (t.empty()) continue;
-        std::string_view keyword = t.word();
-        parser.parseLine(keyword, t, lines);
-    }
+    parseLines(text, path, parser);
     return std::move(parser.scene);
 }
 

@@ -64,4 +64,18 @@ private:
     const LineReader& where_;
 };
 
+// Hands every line of `text` that is not blank or a comment to parser.parseLine(keyword, tokens,
+// lines), the keyword read: the line loop of OBJ and MTL alike.
+template <typename Parser>
+void parseLines(std::string_view text, const std::string& path, Parser& parser) {
+    LineReader lines(text, path);
+    std::string_view line;
+    while (lines.next(line)) {
+        Tokens t(line, lines);
+        if (t.empty()) continue;
+        std::string_view keyword = t.word();
+        parser.parseLine(keyword, t, lines);
+    }
+}
+
 } // namespace pt

@@ -23,13 +23,15 @@ size_t Film::convergedCount() const { return size_t(std::count(converged_.begin(
 
 std::vector<float> Film::samples() const { return std::vector<float>(count_.begin(), count_.end()); }
 
-std::vector<float> Film::mean() const {
-    std::vector<float> out(sum_.size() * 3, 0.0f);
-    for (size_t i = 0; i < sum_.size(); ++i)
+std::vector<float> Film::perSample(const std::vector<glm::dvec3>& sums) const {
+    std::vector<float> out(sums.size() * 3, 0.0f);
+    for (size_t i = 0; i < sums.size(); ++i)
         if (count_[i] > 0)
-            for (int c = 0; c < 3; ++c) out[3 * i + c] = float(sum_[i][c] / count_[i]);
+            for (int c = 0; c < 3; ++c) out[3 * i + c] = float(sums[i][c] / count_[i]);
     return out;
 }
+
+std::vector<float> Film::mean() const { return perSample(sum_); }
 
 std::vector<float> Film::varianceOfMean() const {
     // A pixel of fewer than two samples has no estimate of its variance: +inf says "unknown", where
@@ -55,13 +57,7 @@ void Film::enableFirstHitLayers() {
     hits_.assign(n, 0);
 }
 
-std::vector<float> Film::albedo() const {
-    std::vector<float> out(albedo_.size() * 3, 0.0f);
-    for (size_t i = 0; i < albedo_.size(); ++i)
-        if (count_[i] > 0)
-            for (int c = 0; c < 3; ++c) out[3 * i + c] = float(albedo_[i][c] / count_[i]);
-    return out;
-}
+std::vector<float> Film::albedo() const { return perSample(albedo_); }
 
 std::vector<float> Film::normal() const {
     std::vector<float> out(normal_.size() * 3, 0.0f);

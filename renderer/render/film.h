@@ -76,6 +76,9 @@ public:
     uint32_t decidedAt = 0;
 
 private:
+    // Each pixel's sum divided by its sample count (0 where it has none), as RGB floats.
+    std::vector<float> perSample(const std::vector<glm::dvec3>& sums) const;
+
     int width_, height_;
     std::vector<uint32_t> count_;
     std::vector<glm::dvec3> sum_, sumSq_;
