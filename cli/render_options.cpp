@@ -21,7 +21,7 @@ KHR_materials_clearcoat, _sheen, _specular, _transmission (thin-walled without a
 KHR_texture_transform, KHR_mesh_quantization;
 lights in candela and lux divided by 683 lm/W; without lights, a uniform white environment.
 MTL texture maps: map_Kd, map_Ks (colour), map_Pr, map_Pm, norm, bump/map_bump, map_d (data),
-with options -s, -o, -clamp on|off, -bm, -imfchan r|g|b|m|l (see the README).
+with options -s, -o, -clamp on|off, -bm, -imfchan r|g|b|m|l (see docs/scene-formats.md).
 MTL environment: newenvironment NAME, envmap FILE, envrotate DEG, envscale S (--env replaces it).
 
 options (default in brackets):

@@ -44,7 +44,7 @@ Vec3 texelDirection(const EnvironmentMap& m, int x, int y) {
     return m.toWorld(EnvironmentMap::uvToDirection(Vec2((x + 0.5f) / m.width, (y + 0.5f) / m.height)));
 }
 
-// The convention the README states, on the committed marker map: the centre column looks along
+// The convention docs/scene-formats.md states, on the committed marker map: the centre column looks along
 // +x, a quarter of the way across along -z, three quarters along +z, the top row is +y.
 TEST(EnvironmentMap, MarkersLandWhereTheReadmeSays) {
     std::string warning;

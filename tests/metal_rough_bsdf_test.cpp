@@ -164,7 +164,7 @@ TEST(MetalRoughBsdf, SmoothMetalIsAFresnelMirror) {
 }
 
 // White furnace: a white base colour, metal and dielectric, roughness 0 to 1. The table is
-// printed (the README has it). Metals lose energy at high roughness (single scattering) and may
+// printed (docs/gltf.md has it). Metals lose energy at high roughness (single scattering) and may
 // never exceed 1. The dielectric is the specification's fresnel_mix, which Appendix B calls an
 // approximation: the diffuse base is weighted by 1 - F at the half vector, not by what the
 // specular layer really reflects, so at grazing incidence a white base returns more than
@@ -263,7 +263,7 @@ TEST(MetalRoughBsdf, ClearcoatSamplingMatchesPdf) {
 // White furnace of a coat over black: what a rough coat keeps of the smooth coat's Fc. Single
 // scattering loses what bounces between microfacets, as the metal lobe does (FurnaceTable: 0.31
 // at roughness 1 and normal incidence); it may never exceed Fc by more than noise. Printed for the
-// README.
+// docs/gltf.md.
 TEST(MetalRoughBsdf, ClearcoatFurnaceTable) {
     std::printf("coat over black, energy / Fc   cos 1    cos 0.5  cos 0.1\n");
     for (float roughness : {0.0f, 0.25f, 0.5f, 0.75f, 1.0f}) {
@@ -334,7 +334,7 @@ TEST(MetalRoughBsdf, SheenIsReciprocal) {
 
 // White furnace of a white sheen over a white Lambert base (specularFactor 0): with the
 // albedo-scaling the energy is E_sheen + the base's share, at most 1 where E <= 1; the
-// min-of-two-directions scaling loses some. Printed for the README.
+// min-of-two-directions scaling loses some. Printed for docs/gltf.md.
 TEST(MetalRoughBsdf, SheenFurnaceTable) {
     std::printf("white sheen over white Lambert   cos 1    cos 0.5  cos 0.1\n");
     for (float roughness : {0.0625f, 0.25f, 0.5f, 0.75f, 1.0f}) {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What pt promises about the files it writes ("Nothing lost" in the README): a write that fails
+# What pt promises about the files it writes ("Nothing lost" in docs/rendering.md): a write that fails
 # at any step says so, exits non-zero and leaves the old file as it was and no temporary file; an
 # output that cannot be created fails before rendering; an output is never also an input; a
 # second Ctrl-C leaves nothing half-written; links and file modes behave as documented.

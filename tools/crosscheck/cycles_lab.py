@@ -15,7 +15,7 @@ As in mitsuba_lab.py, the semantics come from the scene format's text:
   Of issue 11's maps only a plain map_Kd is modelled: map_Ks, map_Pr, map_Pm, norm, bump,
   map_d and the -s, -o and -clamp options stop the script (the Mitsuba check has them).
 - Only flat-shaded scenes are modelled. pt's rule for smooth normals that disagree with the
-  geometry (see the README) is not Cycles'.
+  geometry (see docs/validation.md) is not Cycles'.
 
 Cycles' biasing defaults are turned off: light threshold, glossy filter, clamping, adaptive
 sampling and denoising. Each pass goes to its own EXR; combine_passes.py makes the mean and its
