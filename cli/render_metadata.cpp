@@ -47,6 +47,7 @@ void addJobMetadata(Image& image, const RenderArgs& args, const Scene& scene, si
     text("pt:lightChoice", nameOf(kLightChoiceNames, args.settings.lightChoice));
     text("pt:hemisphere", nameOf(kHemisphereNames, args.settings.hemisphere));
     real("pt:clamp", args.settings.clamp);
+    if (args.settings.guideSpp > 0) integer("pt:guideSpp", args.settings.guideSpp);
     real("pt:exposure", args.exposure);
     if (args.budget.adaptive()) { // a part must be resumed and merged with the same rule
         real("pt:noise", args.budget.noise);

@@ -81,6 +81,13 @@ options (default in brackets):
   --sun-dir X,Y,Z        the direction towards the sun, instead of the two angles
   --turbidity T          haze, from 1.7 (very clear) to 10 (hazy) [3]
   --sky-scale S          multiply the sky's, sun's and ground's radiance by S [1]
+  --guide                path guiding: first learn where light comes from at each region of
+                         the scene (training passes of 1, 2, 4, ... samples per pixel of the
+                         whole image, not kept), then draw half of each diffuse or glossy
+                         bounce's directions from what was learnt: for light that next-event
+                         estimation cannot reach, such as caustics through glass [off]
+  --guide-spp N          with --guide, samples per pixel spent learning, in [1, 1023]
+                         [the largest 2^k - 1 up to a quarter of -spp, at most 63]
   --denoise              denoise the image with Intel Open Image Denoise (its RT filter on
                          the CPU, guided by the albedo and normal, which are gathered through
                          mirrors and smooth glass and denoised first); after the last pass,
@@ -212,6 +219,11 @@ RenderArgs parseRenderArgs(int argc, char** argv) {
             setNamed(args, opt, kSamplerNames, r.settings.sampler);
         } else if (opt == "aov") {
             r.aovs = parseAovList(args.value(opt));
+        } else if (opt == "guide") {
+            r.guide = true;
+        } else if (opt == "guide-spp") {
+            r.settings.guideSpp = uint32_t(args.integer(opt, 1, 1023));
+            r.guideSppGiven = true;
         } else if (opt == "denoise") {
             r.denoise = true;
         } else if (opt == "exposure") {
@@ -309,6 +321,13 @@ RenderArgs parseRenderArgs(int argc, char** argv) {
     if (r.budget.adaptive() && r.samplesGiven)
         throw UsageError("--noise decides per pixel from all of its samples, which a --samples part does not see; "
                          "split an adaptive render with --crop (each crop adaptive over its own pixels)");
+    if (r.guideSppGiven && !r.guide) throw UsageError("--guide-spp needs --guide");
+    if (r.guide && !r.guideSppGiven) {
+        // Training samples are spent before the render and not kept: a quarter of -spp at most.
+        uint32_t budget = uint32_t(std::min<long long>(63, std::max<long long>(1, r.spp / 4)));
+        r.settings.guideSpp = 1;
+        while (2 * r.settings.guideSpp + 1 <= budget) r.settings.guideSpp = 2 * r.settings.guideSpp + 1;
+    }
     if (r.denoise && r.part())
         throw UsageError(std::string("--denoise with ") + (r.samplesGiven ? "--samples" : "--crop") +
                          ": a part is denoised only once merged (denoising the parts apart would not give the "

@@ -26,6 +26,7 @@ struct RenderArgs {
     RenderSettings settings;
     AovSelection aovs;
     bool denoise = false;
+    bool guide = false, guideSppGiven = false; // the training samples are settings.guideSpp
     bool quiet = false;
     std::string env;
     double envRotate = 0.0, envScale = 1.0;

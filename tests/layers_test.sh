@@ -3,7 +3,7 @@
 # its own folder and any folder before it, never one after. docs/architecture.md explains the order.
 set -euo pipefail
 root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
-layers=(core simd sampling io image texture environment scene obj gltf load accel material light denoise render)
+layers=(core simd sampling io image texture environment scene obj gltf load accel material light guide denoise render)
 
 rank() { local i; for i in "${!layers[@]}"; do [[ ${layers[$i]} == "$1" ]] && { echo "$i"; return; }; done; echo -1; }
 

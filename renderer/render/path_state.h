@@ -21,6 +21,29 @@ struct FirstHit {
     bool open = true;      // only perfectly specular surfaces so far: albedo and normal may change
 };
 
+// A training pass's record of one path (--guide): the vertices where it could have been guided,
+// each with the light that came back along the direction it left in, credited as the path finds
+// that light. A path records its first kMaxVertices such vertices.
+struct GuideVertex {
+    uint32_t region;
+    Vec3 dir;           // world direction the path left in
+    float pdf;          // its density
+    Spectrum betaAfter; // throughput after this vertex's BSDF weight (before roulette)
+    Spectrum radiance{0.0f};
+};
+struct GuidePath {
+    static constexpr int kMaxVertices = 8;
+    GuideVertex vertices[kMaxVertices];
+    int count = 0;
+    // Light the path gathered (throughput included) reaches vertices [0, upTo) along their
+    // directions: each receives it divided by its own throughput.
+    void credit(const Spectrum& contribution, int upTo) {
+        for (int i = 0; i < upTo; ++i)
+            for (int c = 0; c < 3; ++c)
+                if (vertices[i].betaAfter[c] > 0.0f) vertices[i].radiance[c] += contribution[c] / vertices[i].betaAfter[c];
+    }
+};
+
 template <typename Sampler>
 struct PathState {
     Sampler sampler;          // this path's (pixel, sample index, seed)
@@ -40,6 +63,13 @@ struct PathState {
     bool deltaBefore = true;  // camera or delta lobe before this hit: emitters seen count fully
     uint32_t pixel = 0;       // the caller's index of the pixel the path belongs to
     FirstHit first;
+    GuidePath* guide = nullptr; // a training pass's record of the path, or none
+
+    // Adds light the path found to its estimate (and, in training, to the vertices before).
+    void addRadiance(const Spectrum& contribution) {
+        L += contribution;
+        if (guide) [[unlikely]] guide->credit(contribution, guide->count);
+    }
 };
 
 // A vertex's sample values, one per decision (sampler.h's SampleUse), drawn for all paths of a
@@ -59,6 +89,7 @@ struct ShadowQuery {
     int skipLight;           // sphere light the ray is aimed at (Accel::occluded), or -1
     uint32_t path;           // slot of the path in its batch
     Spectrum contribution;
+    int guideVertices = 0;   // training: the path's vertices before the one that sent it
 };
 
 } // namespace pt

@@ -17,6 +17,7 @@ inline float powerHeuristic(float pdfA, float pdfB) {
 
 constexpr int kRouletteDepth = 3; // scattering events before Russian roulette starts
 constexpr size_t kPrefetchAhead = 4; // paths between a shading record's prefetch and its use
+constexpr float kGuideShare = 0.5f;  // of the directions at a guided vertex (Müller et al.'s fixed choice)
 
 } // namespace
 
@@ -37,8 +38,9 @@ void PathTracer::escape(PathState<Sampler>& path, bool firstHits) const {
     // Seen through a mirror or glass, the sky is what a camera ray that misses sees: no surface.
     if (firstHits && path.first.open) path.first.albedo = Spectrum(0.0f), path.first.normal = Vec3(0.0f);
     const Environment& env = scene_.environment;
-    path.L += path.beta * env.radiance(ray.dir) * hitWeight(path, lights_.environmentEmitter(), kInf);
-    if (env.sun && env.sun->covers(ray.dir)) path.L += path.beta * env.sun->radiance * hitWeight(path, lights_.sunEmitter(), kInf);
+    path.addRadiance(path.beta * env.radiance(ray.dir) * hitWeight(path, lights_.environmentEmitter(), kInf));
+    if (env.sun && env.sun->covers(ray.dir))
+        path.addRadiance(path.beta * env.sun->radiance * hitWeight(path, lights_.sunEmitter(), kInf));
 }
 
 // Shade stage, step 2 for a sphere light: it emits and reflects nothing, so the path ends here.
@@ -53,15 +55,16 @@ void PathTracer::hitSphereLight(PathState<Sampler>& path, const Hit& hit, bool f
         path.first.open = false;
     }
     const uint32_t e = lights_.emitterOfLight(hit.prim);
-    path.L += path.beta * std::get<SphereEmitter>(lights_.emitter(e)).radiance * hitWeight(path, e, hit.t);
+    path.addRadiance(path.beta * std::get<SphereEmitter>(lights_.emitter(e)).radiance * hitWeight(path, e, hit.t));
 }
 
 // Shade stage, step 3: next-event estimation at a surface point. One emitter, one point on it;
 // the shadow ray goes to the shadow stage with what it adds if nothing blocks it.
 template <typename Sampler>
 void PathTracer::sampleLight(const PathState<Sampler>& path, const SurfacePoint& sp, const Material& m,
-                             const ShadingPoint& shading, const Vec3& ng, const VertexDraws& u, uint32_t slot,
-                             std::vector<ShadowQuery>& shadows, RayCounts& counts) const {
+                             const ShadingPoint& shading, const ScatterGuide& guide, const Vec3& ng,
+                             const VertexDraws& u, uint32_t slot, std::vector<ShadowQuery>& shadows,
+                             RayCounts& counts) const {
     const Frame& frame = shading.frame;
     const Bsdf& bsdf = shading.bsdf;
     const float uLight = lights_.size() > 1 ? u.lightChoice : 0.0f;
@@ -76,8 +79,10 @@ void PathTracer::sampleLight(const PathState<Sampler>& path, const SurfacePoint&
     Spectrum f = bsdf.evalPdf(shading.wo, wiLocal, bsdfPdf);
     if (isBlack(f) || isBlack(ls.radiance)) return;
     ++counts.shadow;
-    float w = (ls.isDelta() || settings_.lightSampling != LightSampling::Mis) ? 1.0f : powerHeuristic(pmf * ls.pdf, bsdfPdf);
-    ShadowQuery q{Ray{}, 0.0f, -1, slot, path.beta * f * ls.radiance * (w / (pmf * ls.pdf))};
+    float w = (ls.isDelta() || settings_.lightSampling != LightSampling::Mis)
+                  ? 1.0f
+                  : powerHeuristic(pmf * ls.pdf, scatterPdf(bsdfPdf, ls.wi, guide));
+    ShadowQuery q{Ray{}, 0.0f, -1, slot, path.beta * f * ls.radiance * (w / (pmf * ls.pdf)), path.guide ? path.guide->count : 0};
     bool aimed = true;
     if (ls.flags & kEmitterSurface) {
         // Between the two surfaces' offset points, so that neither self-intersects.
@@ -105,13 +110,13 @@ void PathTracer::sampleLight(const PathState<Sampler>& path, const SurfacePoint&
 // Returns whether the path goes on (its ray set to the next).
 template <typename Sampler>
 bool PathTracer::continuePath(PathState<Sampler>& path, const SurfacePoint& sp, const Material& m,
-                              const ShadingPoint& shading, const Vec3& ng, const VertexDraws& u, bool firstHits,
-                              RayCounts& counts) const {
+                              const ShadingPoint& shading, const ScatterGuide& guide, const Vec3& ng,
+                              const VertexDraws& u, bool firstHits, RayCounts& counts) const {
     const Frame& frame = shading.frame;
     const Ray& ray = path.ray;
     BsdfSample bs;
-    if (!shading.bsdf.sample(shading.wo, u.lobe, u.direction, bs)) return false;
-    Vec3 wi = frame.toWorld(bs.wi);
+    Vec3 wi;
+    if (!sampleScatter(shading, u, guide, bs, wi)) return false;
     if ((glm::dot(wi, ng) > 0.0f) != (bs.wi.z > 0.0f)) return false; // see sampleLight's side note
     if (m.volume && glm::dot(wi, sp.ng) * glm::dot(ray.dir, sp.ng) > 0.0f) // crossed a volume's surface
         path.medium = mediumAfterCrossing(path.medium, sp.material, m, wi, sp.ng);
@@ -124,6 +129,9 @@ bool PathTracer::continuePath(PathState<Sampler>& path, const SurfacePoint& sp, 
     path.prevPdf = bs.pdf;
     path.prevP = sp.p;
     path.prevN = frame.n;
+    // Training: the light that comes back along wi is what this vertex learns from.
+    if (path.guide && guide.guide && !bs.isDelta() && path.guide->count < GuidePath::kMaxVertices)
+        path.guide->vertices[path.guide->count++] = GuideVertex{guide.region, wi, bs.pdf, path.beta};
 
     // Russian roulette on the throughput without the refraction scaling, so paths inside glass
     // are not cut for carrying radiance that is only compressed.
@@ -174,8 +182,8 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
         return false;
     }
     if (m.isEmissive()) // emission found by the path, weighed against next-event estimation
-        path.L += path.beta * emittedRadiance(m, *scene_.textures, sp.uv, sp.footprint) *
-                  hitWeight(path, lights_.emitterOfTriangle(hit.prim), hit.t);
+        path.addRadiance(path.beta * emittedRadiance(m, *scene_.textures, sp.uv, sp.footprint) *
+                         hitWeight(path, lights_.emitterOfTriangle(hit.prim), hit.t));
     if (depth == settings_.maxDepth) return false;
     const ShadingPoint shading = evaluateMaterial(m, *scene_.textures, sp, -ray.dir, settings_.hemisphere);
     const Bsdf& bsdf = shading.bsdf;
@@ -189,9 +197,10 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
         path.first.open = !bsdf.hasNonDelta() && !bsdf.isBlack();
     }
     if (bsdf.isBlack()) return false;
+    const ScatterGuide guide = guide_ ? scatterGuideAt(guide_, sp.p, bsdf, kGuideShare) : ScatterGuide{};
     if (settings_.lightSampling != LightSampling::Bsdf && !lights_.empty() && bsdf.hasNonDelta())
-        sampleLight(path, sp, m, shading, ng, u, slot, shadows, counts);
-    return continuePath(path, sp, m, shading, ng, u, firstHits, counts);
+        sampleLight(path, sp, m, shading, guide, ng, u, slot, shadows, counts);
+    return continuePath(path, sp, m, shading, guide, ng, u, firstHits, counts);
 }
 
 // The draw stage: the sample values of every active path's vertex at `depth` (all paths of a
@@ -215,12 +224,16 @@ void drawVertexSamples(PathBatch<Sampler>& batch, int depth, bool lightChoice) {
 }
 
 template <typename Sampler>
-void PathTracer::trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& counts) const {
+void PathTracer::trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& counts, GuideRecorder* recorder) const {
     auto& paths = batch.paths;
     auto& hits = batch.hits;
     auto& active = batch.active;
     auto& shadows = batch.shadows;
     const uint32_t n = uint32_t(paths.size());
+    if (recorder) {
+        batch.guidePaths.assign(n, GuidePath{});
+        for (uint32_t i = 0; i < n; ++i) paths[i].guide = &batch.guidePaths[i];
+    }
     counts.camera += n;
     active.resize(n);
     for (uint32_t i = 0; i < n; ++i) active[i] = i;
@@ -243,10 +256,23 @@ void PathTracer::trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& cou
         // Shadow: a light sample's contribution counts where nothing blocks its ray. Added before
         // the path's next hit is shaded, as one path alone would.
         for (const ShadowQuery& q : shadows)
-            if (!accel_.occluded(q.ray, q.distance, q.skipLight)) paths[q.path].L += q.contribution;
+            if (!accel_.occluded(q.ray, q.distance, q.skipLight)) {
+                PathState<Sampler>& p = paths[q.path];
+                p.L += q.contribution;
+                if (p.guide) [[unlikely]] p.guide->credit(q.contribution, q.guideVertices);
+            }
         // Intersect: the continuing paths' next rays.
         for (uint32_t i : active) hits[i] = accel_.intersect(paths[i].ray);
     }
+    if (recorder) // what each guidable vertex learns: the light back along its direction, over its density
+        for (const PathState<Sampler>& p : paths) {
+            if (!isFinite(p.L)) continue;
+            for (int i = 0; i < p.guide->count; ++i) {
+                const GuideVertex& v = p.guide->vertices[i];
+                const float energy = average(v.radiance) / v.pdf;
+                if (std::isfinite(energy) && energy >= 0.0f) recorder->record(guide_->recordKey(v.region, v.dir), energy);
+            }
+        }
     for (PathState<Sampler>& p : paths) {
         if (!isFinite(p.L) || p.L.x < 0.0f || p.L.y < 0.0f || p.L.z < 0.0f) {
             ++counts.discarded;
@@ -261,7 +287,7 @@ void PathTracer::trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& cou
     }
 }
 
-template void PathTracer::trace(PathBatch<IndependentSampler>&, bool, RayCounts&) const;
-template void PathTracer::trace(PathBatch<SobolSampler>&, bool, RayCounts&) const;
+template void PathTracer::trace(PathBatch<IndependentSampler>&, bool, RayCounts&, GuideRecorder*) const;
+template void PathTracer::trace(PathBatch<SobolSampler>&, bool, RayCounts&, GuideRecorder*) const;
 
 } // namespace pt

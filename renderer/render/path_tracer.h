@@ -12,6 +12,7 @@
 #include "light/light_set.h"
 #include "material/evaluate_material.h"
 #include "render/path_state.h"
+#include "render/scatter.h"
 #include "render/render_settings.h"
 #include "render/shading_triangles.h"
 #include "render/vertex_tangents.h"
@@ -34,6 +35,7 @@ struct PathBatch {
     std::vector<ShadowQuery> shadows; // this round's shadow rays
     std::vector<VertexDraws> draws;   // this round's sample values, by position in `active`
     std::vector<float> drawX, drawY;  // drawDimension's values, by position in the chosen slots
+    std::vector<GuidePath> guidePaths; // a training pass's records, by slot
 
     void clear() {
         paths.clear();
@@ -98,8 +100,13 @@ public:
     // radiance sample (0 for a discarded NaN, negative or infinite one; clamped if asked), and
     // `first` is filled when `firstHits` is set. Sampler is IndependentSampler or SobolSampler:
     // the choice is made once per render, not per ray.
+    // `recorder` (a training pass of --guide): each path's guidable vertices and the light that
+    // came back along their directions are recorded there.
     template <typename Sampler>
-    void trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& counts) const;
+    void trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& counts, GuideRecorder* recorder = nullptr) const;
+
+    // The path guide directions are drawn from (and, in training, recorded into); none: BSDF only.
+    void setGuide(const PathGuide* guide) { guide_ = guide; }
 
 private:
     // Shade stage for one path at its hit, with its vertex's sample values: returns whether it
@@ -115,11 +122,12 @@ private:
     void hitSphereLight(PathState<Sampler>& path, const Hit& hit, bool firstHits) const;
     template <typename Sampler>
     void sampleLight(const PathState<Sampler>& path, const SurfacePoint& sp, const Material& m,
-                     const ShadingPoint& shading, const Vec3& ng, const VertexDraws& u, uint32_t slot,
-                     std::vector<ShadowQuery>& shadows, RayCounts& counts) const;
+                     const ShadingPoint& shading, const ScatterGuide& guide, const Vec3& ng, const VertexDraws& u,
+                     uint32_t slot, std::vector<ShadowQuery>& shadows, RayCounts& counts) const;
     template <typename Sampler>
     bool continuePath(PathState<Sampler>& path, const SurfacePoint& sp, const Material& m, const ShadingPoint& shading,
-                      const Vec3& ng, const VertexDraws& u, bool firstHits, RayCounts& counts) const;
+                      const ScatterGuide& guide, const Vec3& ng, const VertexDraws& u, bool firstHits,
+                      RayCounts& counts) const;
     // Weight of emission found by BSDF sampling (or by the camera) at a hit `distance` along the path's ray.
     template <typename Sampler>
     float hitWeight(const PathState<Sampler>& path, uint32_t emitter, float distance) const;
@@ -130,6 +138,7 @@ private:
     const Accel& accel_;
     const LightSet& lights_;
     const RenderSettings& settings_;
+    const PathGuide* guide_ = nullptr;
     float pixelSpread_;
 };
 

@@ -26,6 +26,7 @@ const JobField kJobFields[] = {
     {"pt:lightChoice", JobFieldRole::Identity},
     {"pt:hemisphere", JobFieldRole::Identity},
     {"pt:clamp", JobFieldRole::Identity},
+    {"pt:guideSpp", JobFieldRole::Identity}, // --guide: the guide's training samples
     {"pt:exposure", JobFieldRole::Identity},
     {"pt:env", JobFieldRole::Describes}, // its path; its content is in pt:sceneHash
     {"pt:envRotate", JobFieldRole::Identity},

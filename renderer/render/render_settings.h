@@ -63,6 +63,8 @@ struct RenderSettings {
     // Opt-in firefly clamp: a sample whose largest channel exceeds `clamp` is scaled down to it.
     // Biased (energy is lost); 0 keeps the default, unbiased estimate.
     float clamp = 0.0f;
+    // --guide: samples per pixel spent learning the path guide before the render (0: no guiding).
+    uint32_t guideSpp = 0;
 };
 
 // Ray and sample counts, summed per tile and then over the image.

@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include "render/convergence.h"
+#include "scene/complete_scene.h"
 
 #include <tbb/combinable.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -26,6 +27,9 @@ float pixelSpread(const Camera& camera, int height, uint32_t spp) {
 // Paths traced together through the stages of the path loop, at most. A tile's pass goes in
 // batches of this many.
 constexpr size_t kBatchPaths = 512;
+
+// Samples a guide region takes in a training pass of one sample per pixel before it splits.
+constexpr double kGuideSplitSamples = 4000.0;
 
 // One pixel's sums over the samples of a pass, in double so that long renders do not lose the
 // small values to the large.
@@ -59,18 +63,53 @@ Renderer::Renderer(const Scene& scene, const Accel& accel, const Camera& camera,
 
 RayCounts Renderer::renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress,
                                   const std::vector<uint32_t>* startAt) const {
-    if (settings_.sampler == SamplerKind::Sobol) return renderSamplesWith<SobolSampler>(film, first, last, progress, startAt);
-    return renderSamplesWith<IndependentSampler>(film, first, last, progress, startAt);
+    return renderPass(&film, first, last, progress, startAt, settings_.seed, window_, nullptr);
+}
+
+RayCounts Renderer::renderPass(Film* film, uint32_t first, uint32_t last, RenderProgress* progress,
+                               const std::vector<uint32_t>* startAt, uint64_t seed, const PixelWindow& window,
+                               std::vector<GuideRecorder>* recorders) const {
+    if (settings_.sampler == SamplerKind::Sobol)
+        return renderSamplesWith<SobolSampler>(film, first, last, progress, startAt, seed, window, recorders);
+    return renderSamplesWith<IndependentSampler>(film, first, last, progress, startAt, seed, window, recorders);
+}
+
+RayCounts Renderer::trainGuide(RenderProgress* progress) {
+    RayCounts rays;
+    if (settings_.guideSpp == 0) return rays;
+    Vec3 lo, hi;
+    sceneBounds(scene_, lo, hi);
+    guide_ = std::make_unique<PathGuide>(lo, hi);
+    tracer_.setGuide(guide_.get());
+    const PixelWindow full{0, 0, width_, height_};
+    std::vector<GuideRecorder> recorders(tilesIn(full));
+    // Samples of their own: the render's samples stay independent of the guide they are drawn by.
+    const uint64_t seed = hashCombine(settings_.seed, 0x6775696465ULL);
+    uint32_t first = 0;
+    for (uint32_t size = 1; first + size <= settings_.guideSpp; first += size, size *= 2) {
+        if (progress && progress->cancel.load()) break;
+        rays += renderPass(nullptr, first, first + size, nullptr, nullptr, seed, full, &recorders);
+        for (GuideRecorder& r : recorders) { // in tile order: the same tree on every run
+            guide_->add(r);
+            r.clear();
+        }
+        // A region splits once a pass gives it more samples than this (Müller et al.'s
+        // c sqrt(2^k), with c for pt's smaller images).
+        guide_->endPass(uint64_t(kGuideSplitSamples * std::sqrt(double(size))));
+    }
+    return rays;
 }
 
 template <typename Sampler>
-RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last, RenderProgress* progress,
-                                      const std::vector<uint32_t>* startAt) const {
+RayCounts Renderer::renderSamplesWith(Film* film, uint32_t first, uint32_t last, RenderProgress* progress,
+                                      const std::vector<uint32_t>* startAt, uint64_t seed, const PixelWindow& window,
+                                      std::vector<GuideRecorder>* recorders) const {
     tbb::combinable<RayCounts> counts;
     tbb::enumerable_thread_specific<PathBatch<Sampler>> batches;
-    const bool layers = film.hasFirstHitLayers();
+    const bool layers = film && film->hasFirstHitLayers();
+    const int tilesX = (window.width() + kTileSize - 1) / kTileSize;
     tbb::parallel_for(
-        tbb::blocked_range<size_t>(0, tileCount(), 1),
+        tbb::blocked_range<size_t>(0, tilesIn(window), 1),
         [&](const tbb::blocked_range<size_t>& range) {
             // Embree asks for flush-to-zero and denormals-are-zero on every tracing thread.
             _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
@@ -80,12 +119,12 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
             constexpr int kPacket = Accel::kPacket;
             for (size_t tile = range.begin(); tile != range.end(); ++tile) {
                 if (progress && progress->cancel.load(std::memory_order_relaxed)) return;
-                const int x0 = window_.x0 + int(tile % tilesX_) * kTileSize, y0 = window_.y0 + int(tile / tilesX_) * kTileSize;
-                const int x1 = std::min(x0 + kTileSize, window_.x1), y1 = std::min(y0 + kTileSize, window_.y1);
+                const int x0 = window.x0 + int(tile % tilesX) * kTileSize, y0 = window.y0 + int(tile / tilesX) * kTileSize;
+                const int x1 = std::min(x0 + kTileSize, window.x1), y1 = std::min(y0 + kTileSize, window.y1);
                 const int tileWidth = x1 - x0;
                 // The sampler keys a pixel by its place in the full image, the film by its place in the window.
                 auto filmPixel = [&](int x, int y) {
-                    return size_t(y - window_.y0) * size_t(window_.width()) + size_t(x - window_.x0);
+                    return size_t(y - window.y0) * size_t(window.width()) + size_t(x - window.x0);
                 };
                 PixelSums sums[kTileSize * kTileSize];
                 PixelKey keys[kTileSize * kTileSize];
@@ -95,14 +134,15 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
                         const int k = (y - y0) * tileWidth + (x - x0);
                         begin[k] = startAt ? std::max(first, (*startAt)[filmPixel(x, y)]) : first;
                         tileBegin = std::min(tileBegin, begin[k]);
-                        keys[k] = Sampler::pixelKey(uint32_t(y) * uint32_t(width_) + uint32_t(x), settings_.seed);
+                        keys[k] = Sampler::pixelKey(uint32_t(y) * uint32_t(width_) + uint32_t(x), seed);
                     }
                 // Paths go into the batch sample by sample, each sample's pixels row by row in
                 // groups of kPacket, whose camera rays are traced as one packet. Results are summed
                 // in the same order, so each pixel adds its samples in sample order.
                 batch.clear();
+                GuideRecorder* recorder = recorders ? &(*recorders)[tile] : nullptr;
                 auto traceBatch = [&] {
-                    tracer_.trace(batch, layers, local);
+                    tracer_.trace(batch, layers, local, recorder);
                     for (const PathState<Sampler>& p : batch.paths) sums[p.pixel].add(p.L, p.first);
                     batch.clear();
                 };
@@ -142,13 +182,15 @@ RayCounts Renderer::renderSamplesWith(Film& film, uint32_t first, uint32_t last,
                                 if (active[i]) batch.hits.push_back(hits[i]);
                         }
                 if (!batch.paths.empty()) traceBatch();
+                if (recorder) recorder->reduce();
+                if (film)
                 for (int y = y0; y < y1; ++y)
                     for (int x = x0; x < x1; ++x) {
                         const int k = (y - y0) * tileWidth + (x - x0);
                         if (begin[k] >= last) continue; // a resumed pixel that already has them all
                         const PixelSums& p = sums[k];
-                        film.add(filmPixel(x, y), p.sum, p.sumSq, last - begin[k]);
-                        if (layers) film.addFirstHit(filmPixel(x, y), p.albedo, p.normal, p.depth, p.hits);
+                        film->add(filmPixel(x, y), p.sum, p.sumSq, last - begin[k]);
+                        if (layers) film->addFirstHit(filmPixel(x, y), p.albedo, p.normal, p.depth, p.hits);
                     }
                 if (progress) progress->done.fetch_add(last - first, std::memory_order_relaxed);
             }
@@ -216,6 +258,8 @@ RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& c
     auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     arena.execute([&] {
+        // The guide is learnt first, inside the time budget: --guide's cost is the render's.
+        result.rays += renderer.trainGuide(progress);
         double secondsPerPixelSample = 0.0; // of the last pass, for the time budget
         for (uint32_t first = begin; first < end;) {
             if (progress && progress->cancel.load()) break;

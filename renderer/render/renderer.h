@@ -51,13 +51,29 @@ public:
     RayCounts renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress = nullptr,
                             const std::vector<uint32_t>* startAt = nullptr) const;
 
+    // --guide: learns the path guide in passes of 1, 2, 4, ... samples per pixel of the whole
+    // image (a crop's too, so that every part of a job learns the same guide), from samples of
+    // their own (another seed), until settings.guideSpp are spent; the render's samples are then
+    // guided by it. Deterministic. Returns the rays traced; stops early on a cancel request.
+    RayCounts trainGuide(RenderProgress* progress = nullptr);
+    const PathGuide* guide() const { return guide_.get(); }
+
     size_t tileCount() const { return size_t(tilesX_) * tilesY_; }
     const PixelWindow& window() const { return window_; }
 
 private:
+    // Samples [first, last) of every pixel of `window` under `seed`, into `film` (if any, over
+    // the window) and, in training, into each tile's recorder.
     template <typename Sampler>
-    RayCounts renderSamplesWith(Film& film, uint32_t first, uint32_t last, RenderProgress* progress,
-                                const std::vector<uint32_t>* startAt) const;
+    RayCounts renderSamplesWith(Film* film, uint32_t first, uint32_t last, RenderProgress* progress,
+                                const std::vector<uint32_t>* startAt, uint64_t seed, const PixelWindow& window,
+                                std::vector<GuideRecorder>* recorders) const;
+    RayCounts renderPass(Film* film, uint32_t first, uint32_t last, RenderProgress* progress,
+                         const std::vector<uint32_t>* startAt, uint64_t seed, const PixelWindow& window,
+                         std::vector<GuideRecorder>* recorders) const;
+    static size_t tilesIn(const PixelWindow& w) {
+        return size_t((w.width() + kTileSize - 1) / kTileSize) * size_t((w.height() + kTileSize - 1) / kTileSize);
+    }
 
     const Scene& scene_;
     const Accel& accel_;
@@ -67,6 +83,7 @@ private:
     LightSet lights_;
     PinholeCamera camera_;
     PathTracer tracer_;
+    std::unique_ptr<PathGuide> guide_; // --guide
     int width_, height_;
     PixelWindow window_;
     int tilesX_, tilesY_;

@@ -1,0 +1,125 @@
+#include "guide/path_guide.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pt {
+namespace {
+
+// A quadrant holding more than this share of a region's light is split when the next learning
+// tree is made (Müller et al.'s rho).
+constexpr float kSplitShare = 0.01f;
+// The spatial tree's deepest level: 2^-8 of the scene along each axis.
+constexpr int kMaxSpatialDepth = 24;
+
+} // namespace
+
+void GuideRecorder::reduce() {
+    // Stable: records of one place keep the order the paths left them, so their sum is the same
+    // on every run.
+    std::stable_sort(records_.begin(), records_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    sums_.clear();
+    for (const auto& [key, energy] : records_) {
+        if (sums_.empty() || sums_.back().key != key) sums_.push_back({key, 0.0f, 0});
+        sums_.back().energy += energy;
+        ++sums_.back().count;
+    }
+    records_.clear();
+}
+
+PathGuide::PathGuide(const Vec3& lo, const Vec3& hi) : nodes_(1), regions_(1) {
+    const Vec3 extent = hi - lo;
+    size_ = std::max({extent.x, extent.y, extent.z, 1e-6f}) * 1.0001f;
+    lo_ = 0.5f * (lo + hi) - Vec3(0.5f * size_);
+}
+
+uint32_t PathGuide::regionAt(const Vec3& p) const {
+    Vec3 x = (p - lo_) / size_; // in the unit cube
+    uint32_t n = 0;
+    for (int axis = 0;; axis = axis == 2 ? 0 : axis + 1) {
+        const Node& node = nodes_[n];
+        if (node.child == 0) return node.region;
+        const int upper = x[axis] >= 0.5f;
+        x[axis] = 2.0f * x[axis] - float(upper);
+        n = node.child + uint32_t(upper);
+    }
+}
+
+int PathGuide::depthAt(const Vec3& p) const {
+    Vec3 x = (p - lo_) / size_;
+    uint32_t n = 0;
+    int depth = 0;
+    for (int axis = 0; nodes_[n].child != 0; axis = axis == 2 ? 0 : axis + 1, ++depth) {
+        const int upper = x[axis] >= 0.5f;
+        x[axis] = 2.0f * x[axis] - float(upper);
+        n = nodes_[n].child + uint32_t(upper);
+    }
+    return depth;
+}
+
+Vec3 PathGuide::sample(uint32_t region, Vec2 u, float& pdf) const {
+    Vec2 x = regions_[region].learnt.sample(u, pdf);
+    pdf *= 1.0f / (4.0f * kPi);
+    return directionOfSquare(x);
+}
+
+float PathGuide::pdf(uint32_t region, const Vec3& dir) const {
+    return regions_[region].learnt.pdf(squareOfDirection(dir)) * (1.0f / (4.0f * kPi));
+}
+
+uint64_t PathGuide::recordKey(uint32_t region, const Vec3& dir) const {
+    return uint64_t(region) << 32 | regions_[region].learning.quadrantOf(squareOfDirection(dir));
+}
+
+void PathGuide::add(const GuideRecorder& tile) {
+    for (const GuideRecorder::Sum& s : tile.sums()) {
+        Region& r = regions_[size_t(s.key >> 32)];
+        r.learning.add(uint32_t(s.key), s.energy);
+        r.samples += s.count;
+    }
+}
+
+void PathGuide::endPass(uint64_t samplesToSplit) {
+    for (Region& r : regions_) {
+        r.learning.sumUp();
+        // A region that learnt nothing this pass keeps what it knew.
+        if (r.learning.energy() > 0.0f) r.learnt = std::move(r.learning);
+    }
+    // Depth-first over the leaves as they are now; split() appends nodes and regions.
+    const size_t leaves = nodes_.size();
+    std::vector<int> depth(leaves, 0);
+    for (size_t n = 0; n < leaves; ++n) {
+        if (nodes_[n].child) {
+            depth[nodes_[n].child] = depth[n] + 1;
+            depth[nodes_[n].child + 1] = depth[n] + 1;
+            continue;
+        }
+        split(uint32_t(n), depth[n], regions_[nodes_[n].region].samples, samplesToSplit);
+    }
+    for (Region& r : regions_) {
+        r.learning = r.learnt.refined(kSplitShare);
+        r.samples = 0;
+    }
+}
+
+// A leaf with more samples than `samplesToSplit` becomes two, each with a copy of what it learnt
+// and, as far as anyone knows, half its samples; again until none has too many.
+void PathGuide::split(uint32_t node, int depth, uint64_t samples, uint64_t samplesToSplit) {
+    if (samples <= samplesToSplit || depth >= kMaxSpatialDepth) return;
+    const uint32_t region = nodes_[node].region, child = uint32_t(nodes_.size());
+    nodes_.resize(nodes_.size() + 2);
+    nodes_[node].child = child;
+    nodes_[child].region = region;
+    nodes_[child + 1].region = uint32_t(regions_.size());
+    regions_.push_back(Region{regions_[region].learnt, {}, 0});
+    split(child, depth + 1, samples / 2, samplesToSplit);
+    split(child + 1, depth + 1, samples / 2, samplesToSplit);
+}
+
+size_t PathGuide::directionalNodes() const {
+    size_t n = 0;
+    for (const Region& r : regions_) n += r.learnt.nodeCount();
+    return n;
+}
+
+} // namespace pt

@@ -1,0 +1,87 @@
+// Path guiding: a spatial-directional tree (Müller et al. 2017, "Practical Path Guiding") that
+// learns, during training passes, where light arrives from at each region of the scene, so that
+// the path loop can sample directions from it beside the BSDF. The space is a binary tree over the
+// scene's bounding cube, split at midpoints along x, y, z in turn; each leaf region holds two
+// directional quadtrees, one learnt (sampled from) and one learning.
+//
+// Learning is deterministic: a pass's samples are gathered per image tile (GuideRecorder), reduced
+// there in the tile's own order, and added to the tree tile by tile in tile order, so the learnt
+// tree, and so the image, do not depend on which thread rendered which tile.
+#pragma once
+
+#include "core/math.h"
+#include "guide/directional_quadtree.h"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace pt {
+
+// One tile's share of a training pass: (where, energy) pairs as the paths leave them, reduced by
+// reduce() to one energy and count per place, in the order they were recorded.
+class GuideRecorder {
+public:
+    void record(uint64_t key, float energy) { records_.emplace_back(key, energy); }
+    void reduce();
+    void clear() { records_.clear(), sums_.clear(); }
+
+    struct Sum {
+        uint64_t key;
+        float energy;
+        uint32_t count;
+    };
+    const std::vector<Sum>& sums() const { return sums_; }
+
+private:
+    std::vector<std::pair<uint64_t, float>> records_;
+    std::vector<Sum> sums_;
+};
+
+class PathGuide {
+public:
+    // `lo`, `hi`: the scene's bounds; the tree covers the cube around them.
+    PathGuide(const Vec3& lo, const Vec3& hi);
+
+    // The leaf region holding p (a point outside the cube goes to the nearest region).
+    uint32_t regionAt(const Vec3& p) const;
+    // Whether the region has learnt anything to sample from.
+    bool trained(uint32_t region) const { return regions_[region].learnt.energy() > 0.0f; }
+    // A world direction drawn from the region's learnt distribution, with its solid-angle density.
+    Vec3 sample(uint32_t region, Vec2 u, float& pdf) const;
+    float pdf(uint32_t region, const Vec3& dir) const;
+    // The region's learnt distribution on the equal-area square (directionOfSquare maps it to
+    // directions), for tests.
+    const DirectionalQuadtree& learnt(uint32_t region) const { return regions_[region].learnt; }
+    // How many times the cube was halved to reach the region holding p.
+    int depthAt(const Vec3& p) const;
+
+    // Learning. Where a sample of incident light along `dir` at `region` goes (recordKey), the
+    // tiles' reduced records added in tile order (add), then endPass: the learning trees become
+    // the learnt ones, crowded regions split, and new learning trees are refined from them.
+    uint64_t recordKey(uint32_t region, const Vec3& dir) const;
+    void add(const GuideRecorder& tile);
+    // `samplesToSplit`: a region that received more samples in this pass is split in two.
+    void endPass(uint64_t samplesToSplit);
+
+    size_t regionCount() const { return regions_.size(); }
+    size_t directionalNodes() const;
+
+private:
+    struct Node {
+        uint32_t child = 0;  // children at child and child + 1; 0: a leaf
+        uint32_t region = 0; // a leaf's region
+    };
+    struct Region {
+        DirectionalQuadtree learnt, learning;
+        uint64_t samples = 0; // received this pass
+    };
+    void split(uint32_t node, int depth, uint64_t samples, uint64_t samplesToSplit);
+
+    Vec3 lo_;
+    float size_;
+    std::vector<Node> nodes_;
+    std::vector<Region> regions_;
+};
+
+} // namespace pt
