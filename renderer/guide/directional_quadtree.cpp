@@ -135,6 +135,7 @@ DirectionalQuadtree DirectionalQuadtree::refined(float fraction) const {
 // its quadrants' energy shared out evenly from the leaf above), with quadrant energies `energy`.
 void DirectionalQuadtree::refineInto(DirectionalQuadtree& out, uint32_t at, int old, const float (&energy)[4], float least,
                                      int depth) const {
+    for (int q = 0; q < 4; ++q) out.nodes_[at].energy[q] = energy[q]; // leaves keep it; sumUp() redoes the rest
     if (depth >= kMaxDepth) return;
     for (int q = 0; q < 4; ++q) {
         if (!(energy[q] > least)) continue;

@@ -38,8 +38,11 @@ public:
     // density is constant on each leaf quadrant): for tests of sample() and pdf().
     double mass(Vec2 lo, Vec2 hi) const;
 
-    // The structure for the next round of learning, without energy: a quadrant holding more than
-    // `fraction` of the total energy is a node (split further down to kMaxDepth), any other a leaf.
+    // The structure for the next round of learning: a quadrant holding more than `fraction` of
+    // the total energy is a node (split further down to kMaxDepth), any other a leaf. It keeps
+    // this tree's energy (a new quadrant below an old leaf a quarter of it), so that the next
+    // round adds to what was learnt rather than starting again: every round's estimate is
+    // unbiased, and a training budget of a few samples per pixel is too small to throw any away.
     DirectionalQuadtree refined(float fraction) const;
 
     size_t nodeCount() const { return nodes_.size(); }

@@ -27,15 +27,23 @@ void GuideRecorder::reduce() {
     records_.clear();
 }
 
-PathGuide::PathGuide(const Vec3& lo, const Vec3& hi) : nodes_(1), regions_(1) {
+PathGuide::PathGuide(const Vec3& lo, const Vec3& hi) : nodes_(kFacings), regions_(kFacings) {
+    for (uint32_t f = 0; f < kFacings; ++f) nodes_[f].region = f;
     const Vec3 extent = hi - lo;
     size_ = std::max({extent.x, extent.y, extent.z, 1e-6f}) * 1.0001f;
     lo_ = 0.5f * (lo + hi) - Vec3(0.5f * size_);
 }
 
-uint32_t PathGuide::regionAt(const Vec3& p) const {
+// The root of the tree for surfaces facing n: along which axis n leans most, and which way.
+uint32_t PathGuide::facing(const Vec3& n) {
+    const Vec3 a = glm::abs(n);
+    const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+    return uint32_t(2 * axis + (n[axis] < 0.0f));
+}
+
+uint32_t PathGuide::regionAt(const Vec3& p, const Vec3& normal) const {
     Vec3 x = (p - lo_) / size_; // in the unit cube
-    uint32_t n = 0;
+    uint32_t n = facing(normal);
     for (int axis = 0;; axis = axis == 2 ? 0 : axis + 1) {
         const Node& node = nodes_[n];
         if (node.child == 0) return node.region;
@@ -45,9 +53,9 @@ uint32_t PathGuide::regionAt(const Vec3& p) const {
     }
 }
 
-int PathGuide::depthAt(const Vec3& p) const {
+int PathGuide::depthAt(const Vec3& p, const Vec3& normal) const {
     Vec3 x = (p - lo_) / size_;
-    uint32_t n = 0;
+    uint32_t n = facing(normal);
     int depth = 0;
     for (int axis = 0; nodes_[n].child != 0; axis = axis == 2 ? 0 : axis + 1, ++depth) {
         const int upper = x[axis] >= 0.5f;

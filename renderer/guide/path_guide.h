@@ -43,8 +43,9 @@ public:
     // `lo`, `hi`: the scene's bounds; the tree covers the cube around them.
     PathGuide(const Vec3& lo, const Vec3& hi);
 
-    // The leaf region holding p (a point outside the cube goes to the nearest region).
-    uint32_t regionAt(const Vec3& p) const;
+    // The leaf region holding p on a surface facing `normal` (a point outside the cube goes to
+    // the nearest region).
+    uint32_t regionAt(const Vec3& p, const Vec3& normal) const;
     // Whether the region has learnt anything to sample from.
     bool trained(uint32_t region) const { return regions_[region].learnt.energy() > 0.0f; }
     // A world direction drawn from the region's learnt distribution, with its solid-angle density.
@@ -54,7 +55,7 @@ public:
     // directions), for tests.
     const DirectionalQuadtree& learnt(uint32_t region) const { return regions_[region].learnt; }
     // How many times the cube was halved to reach the region holding p.
-    int depthAt(const Vec3& p) const;
+    int depthAt(const Vec3& p, const Vec3& normal) const;
 
     // Learning. Where a sample of incident light along `dir` at `region` goes (recordKey), the
     // tiles' reduced records added in tile order (add), then endPass: the learning trees become
@@ -68,6 +69,11 @@ public:
     size_t directionalNodes() const;
 
 private:
+    // Surfaces facing different ways see light from different halves of the sphere: six trees,
+    // one per axis and sign that a surface's normal leans along most, so that a region's
+    // distribution is not spread over directions half of its surfaces cannot take.
+    static constexpr uint32_t kFacings = 6;
+    static uint32_t facing(const Vec3& n);
     struct Node {
         uint32_t child = 0;  // children at child and child + 1; 0: a leaf
         uint32_t region = 0; // a leaf's region

@@ -51,6 +51,9 @@ struct Bsdf {
     bool sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const {
         return visit([&](const auto& b) { return b.sample(wo, u1, u2, out); });
     }
+    // The chance that sample() takes a delta lobe, and whether lobe value u1 makes it.
+    float deltaShare() const { return visit([](const auto& b) { return b.deltaShare(); }); }
+    bool picksDelta(float u1) const { return visit([&](const auto& b) { return b.picksDelta(u1); }); }
 };
 
 static_assert(std::is_trivially_copyable_v<LabBsdf> && std::is_trivially_copyable_v<MetalRoughBsdf>);

@@ -110,6 +110,10 @@ struct LabBsdf {
     }
     // u1 chooses the lobe, u2 the direction inside it. Returns false if the path ends here.
     bool sample(const Vec3& wo, float u1, Vec2 u2, BsdfSample& out) const;
+    // The chance that sample() takes a delta lobe, and whether u1 makes it take one (a path
+    // guide leaves those choices to the BSDF, as sample() makes them).
+    float deltaShare() const { return rough() ? 0.0f : pMirror + pRefract; }
+    bool picksDelta(float u1) const { return !rough() && (u1 < pMirror + pRefract || pDiffuse == 0.0f); }
 };
 
 // Schlick's approximation, per channel: R0 + (1 - R0)(1 - cos)^5.

@@ -89,6 +89,12 @@ struct MetalRoughBsdf {
                (pSheen > 0.0f ? kLobeReflection | kLobeGlossy : 0) | (pDiffuse > 0.0f ? kLobeReflection | kLobeDiffuse : 0);
     }
     bool isBlack() const { return pSpecular + pDiffuse + pCoat + pSheen == 0.0f; }
+    // The chance that sample() takes a delta lobe (a smooth coat or specular), and whether u1
+    // makes it take one: the intervals sample() reads u1 by.
+    float deltaShare() const { return (coatSmooth() ? pCoat : 0.0f) + (smooth() ? pSpecular : 0.0f); }
+    bool picksDelta(float u1) const {
+        return u1 < pCoat ? coatSmooth() : u1 < pCoat + pSpecular ? smooth() : false;
+    }
     // Reflectance at wo for the albedo AOV: each lobe's colour times its share at wo, with
     // Fresnel at the normal (the weights that choose a lobe, per channel), as the lab model's.
     Spectrum albedo(const Vec3& wo) const;

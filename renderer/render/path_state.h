@@ -35,6 +35,7 @@ struct GuidePath {
     static constexpr int kMaxVertices = 8;
     GuideVertex vertices[kMaxVertices];
     int count = 0;
+    bool lastIsPrevious = false; // the last vertex recorded is the one the path just left
     // Light the path gathered (throughput included) reaches vertices [0, upTo) along their
     // directions: each receives it divided by its own throughput.
     void credit(const Spectrum& contribution, int upTo) {
@@ -66,9 +67,12 @@ struct PathState {
     GuidePath* guide = nullptr; // a training pass's record of the path, or none
 
     // Adds light the path found to its estimate (and, in training, to the vertices before).
-    void addRadiance(const Spectrum& contribution) {
+    // Emitted light that next-event estimation could have sampled from the vertex the path just
+    // left is not that vertex's to learn: the guide is for the light NEE cannot find, and
+    // learning the lamps would send guided samples where NEE already looks.
+    void addRadiance(const Spectrum& contribution, bool neeCovers = false) {
         L += contribution;
-        if (guide) [[unlikely]] guide->credit(contribution, guide->count);
+        if (guide) [[unlikely]] guide->credit(contribution, guide->count - int(neeCovers && guide->lastIsPrevious));
     }
 };
 
@@ -80,6 +84,7 @@ struct VertexDraws {
     float lobe;
     Vec2 direction;
     float roulette;
+    float guide; // guided renders: the BSDF or the guide (scatter.h)
 };
 
 // A shadow ray of next-event estimation, with what it adds to its path's radiance if unblocked.

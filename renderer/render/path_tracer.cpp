@@ -30,6 +30,11 @@ float PathTracer::hitWeight(const PathState<Sampler>& path, uint32_t emitter, fl
     return powerHeuristic(path.prevPdf, lightPdf);
 }
 
+template <typename Sampler>
+bool PathTracer::neeCovers(const PathState<Sampler>& path, uint32_t emitter) const {
+    return !path.deltaBefore && settings_.lightSampling != LightSampling::Bsdf && !lights_.empty() && emitter != ~0u;
+}
+
 // Shade stage, step 1: the ray left the scene. What the environment and the sun's disk send
 // along it, weighed against next-event estimation's chance of having sampled them.
 template <typename Sampler>
@@ -38,9 +43,11 @@ void PathTracer::escape(PathState<Sampler>& path, bool firstHits) const {
     // Seen through a mirror or glass, the sky is what a camera ray that misses sees: no surface.
     if (firstHits && path.first.open) path.first.albedo = Spectrum(0.0f), path.first.normal = Vec3(0.0f);
     const Environment& env = scene_.environment;
-    path.addRadiance(path.beta * env.radiance(ray.dir) * hitWeight(path, lights_.environmentEmitter(), kInf));
+    path.addRadiance(path.beta * env.radiance(ray.dir) * hitWeight(path, lights_.environmentEmitter(), kInf),
+                     neeCovers(path, lights_.environmentEmitter()));
     if (env.sun && env.sun->covers(ray.dir))
-        path.addRadiance(path.beta * env.sun->radiance * hitWeight(path, lights_.sunEmitter(), kInf));
+        path.addRadiance(path.beta * env.sun->radiance * hitWeight(path, lights_.sunEmitter(), kInf),
+                         neeCovers(path, lights_.sunEmitter()));
 }
 
 // Shade stage, step 2 for a sphere light: it emits and reflects nothing, so the path ends here.
@@ -55,7 +62,8 @@ void PathTracer::hitSphereLight(PathState<Sampler>& path, const Hit& hit, bool f
         path.first.open = false;
     }
     const uint32_t e = lights_.emitterOfLight(hit.prim);
-    path.addRadiance(path.beta * std::get<SphereEmitter>(lights_.emitter(e)).radiance * hitWeight(path, e, hit.t));
+    path.addRadiance(path.beta * std::get<SphereEmitter>(lights_.emitter(e)).radiance * hitWeight(path, e, hit.t),
+                     neeCovers(path, e));
 }
 
 // Shade stage, step 3: next-event estimation at a surface point. One emitter, one point on it;
@@ -130,8 +138,11 @@ bool PathTracer::continuePath(PathState<Sampler>& path, const SurfacePoint& sp, 
     path.prevP = sp.p;
     path.prevN = frame.n;
     // Training: the light that comes back along wi is what this vertex learns from.
-    if (path.guide && guide.guide && !bs.isDelta() && path.guide->count < GuidePath::kMaxVertices)
-        path.guide->vertices[path.guide->count++] = GuideVertex{guide.region, wi, bs.pdf, path.beta};
+    if (path.guide) {
+        const bool record = guide.guide && !bs.isDelta() && path.guide->count < GuidePath::kMaxVertices;
+        if (record) path.guide->vertices[path.guide->count++] = GuideVertex{guide.region, wi, bs.pdf, path.beta};
+        path.guide->lastIsPrevious = record;
+    }
 
     // Russian roulette on the throughput without the refraction scaling, so paths inside glass
     // are not cut for carrying radiance that is only compressed.
@@ -181,9 +192,11 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
         }
         return false;
     }
-    if (m.isEmissive()) // emission found by the path, weighed against next-event estimation
-        path.addRadiance(path.beta * emittedRadiance(m, *scene_.textures, sp.uv, sp.footprint) *
-                         hitWeight(path, lights_.emitterOfTriangle(hit.prim), hit.t));
+    if (m.isEmissive()) { // emission found by the path, weighed against next-event estimation
+        const uint32_t e = lights_.emitterOfTriangle(hit.prim);
+        path.addRadiance(path.beta * emittedRadiance(m, *scene_.textures, sp.uv, sp.footprint) * hitWeight(path, e, hit.t),
+                         neeCovers(path, e));
+    }
     if (depth == settings_.maxDepth) return false;
     const ShadingPoint shading = evaluateMaterial(m, *scene_.textures, sp, -ray.dir, settings_.hemisphere);
     const Bsdf& bsdf = shading.bsdf;
@@ -197,7 +210,7 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
         path.first.open = !bsdf.hasNonDelta() && !bsdf.isBlack();
     }
     if (bsdf.isBlack()) return false;
-    const ScatterGuide guide = guide_ ? scatterGuideAt(guide_, sp.p, bsdf, kGuideShare) : ScatterGuide{};
+    const ScatterGuide guide = guide_ ? scatterGuideAt(guide_, sp.p, shading.wo.z >= 0.0f ? shading.frame.n : -shading.frame.n, bsdf, kGuideShare) : ScatterGuide{};
     if (settings_.lightSampling != LightSampling::Bsdf && !lights_.empty() && bsdf.hasNonDelta())
         sampleLight(path, sp, m, shading, guide, ng, u, slot, shadows, counts);
     return continuePath(path, sp, m, shading, guide, ng, u, firstHits, counts);
@@ -207,7 +220,7 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
 // round are at one depth), into batch.draws by position in batch.active. The light choice
 // (with one light) and roulette (before kRouletteDepth) are left undrawn where no path reads them.
 template <typename Sampler>
-void drawVertexSamples(PathBatch<Sampler>& batch, int depth, bool lightChoice) {
+void drawVertexSamples(PathBatch<Sampler>& batch, int depth, bool lightChoice, bool guiding) {
     const bool roulette = depth + 1 >= kRouletteDepth;
     const size_t n = batch.active.size();
     batch.draws.resize(n);
@@ -220,7 +233,11 @@ void drawVertexSamples(PathBatch<Sampler>& batch, int depth, bool lightChoice) {
     draw(SampleUse::LightPoint, true, [](VertexDraws& d, float x, float y) { d.lightPoint = Vec2(x, y); });
     draw(SampleUse::Lobe, false, [](VertexDraws& d, float x, float) { d.lobe = x; });
     draw(SampleUse::Direction, true, [](VertexDraws& d, float x, float y) { d.direction = Vec2(x, y); });
-    if (roulette) draw(SampleUse::Roulette, false, [](VertexDraws& d, float x, float) { d.roulette = x; });
+    // A guided render reads the guide's choice beside roulette's, from the same dimension.
+    if (guiding)
+        draw(SampleUse::Roulette, true, [](VertexDraws& d, float x, float y) { d.roulette = x, d.guide = y; });
+    else if (roulette)
+        draw(SampleUse::Roulette, false, [](VertexDraws& d, float x, float) { d.roulette = x; });
 }
 
 template <typename Sampler>
@@ -239,7 +256,7 @@ void PathTracer::trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& cou
     for (uint32_t i = 0; i < n; ++i) active[i] = i;
     for (int depth = 0; !active.empty(); ++depth) {
         // Draw, then shade: each path's hit, keeping those that go on.
-        drawVertexSamples(batch, depth, lights_.size() > 1);
+        drawVertexSamples(batch, depth, lights_.size() > 1, guide_ != nullptr);
         shadows.clear();
         size_t going = 0;
         for (size_t k = 0; k < active.size(); ++k) {

@@ -131,6 +131,9 @@ private:
     // Weight of emission found by BSDF sampling (or by the camera) at a hit `distance` along the path's ray.
     template <typename Sampler>
     float hitWeight(const PathState<Sampler>& path, uint32_t emitter, float distance) const;
+    // Whether next-event estimation could have sampled the emitter the path just found.
+    template <typename Sampler>
+    bool neeCovers(const PathState<Sampler>& path, uint32_t emitter) const;
 
     const Scene& scene_;
     const std::vector<ShadingTriangle>& triangles_;

@@ -11,49 +11,45 @@
 
 namespace pt {
 
-// The guide at a shading point: the region's learnt distribution, used for `share` of the
-// directions (0: not guided here).
+// The guide at a shading point: the region's learnt distribution, and the weights of the two
+// strategies in the density of a non-delta direction (guide 0: not guided here).
 struct ScatterGuide {
     const PathGuide* guide = nullptr;
     uint32_t region = 0;
-    float share = 0.0f;
+    float share = 0.0f;  // of the draws that do not take a delta lobe, the guide's
+    float bsdf = 1.0f;   // 1 - share: the BSDF's non-delta density counts this much
+    float guided = 0.0f; // share (1 - the BSDF's delta share): the guide's density counts this much
 };
 
 // Guided where the BSDF has a non-specular lobe and transmits nothing: the guide's directions
 // that a reflecting surface cannot take are wasted, and a transmitting one's refraction is the
-// BSDF's to sample.
-inline ScatterGuide scatterGuideAt(const PathGuide* guide, const Vec3& p, const Bsdf& bsdf, float share) {
+// BSDF's to sample. Its delta lobes keep the chance the BSDF gives them: a caustic is a diffuse
+// bounce the guide aims, followed by a mirror the BSDF must still take as often as before.
+inline ScatterGuide scatterGuideAt(const PathGuide* guide, const Vec3& p, const Vec3& n, const Bsdf& bsdf, float share) {
     const uint8_t lobes = bsdf.lobes();
     if (!guide || !(lobes & kLobeNonSpecular) || (lobes & kLobeTransmission)) return {};
-    const uint32_t region = guide->regionAt(p);
-    if (!guide->trained(region)) return {guide, region, 0.0f};
-    return {guide, region, share};
+    const uint32_t region = guide->regionAt(p, n);
+    if (!guide->trained(region)) return {guide, region};
+    return {guide, region, share, 1.0f - share, share * (1.0f - bsdf.deltaShare())};
 }
 
-// The density of the world direction wi (wiLocal in the shading frame), given the BSDF's own.
+// The density of the world direction wi, given the BSDF's own (non-delta) density.
 inline float scatterPdf(float bsdfPdf, const Vec3& wi, const ScatterGuide& g) {
     if (g.share == 0.0f) return bsdfPdf;
-    return (1.0f - g.share) * bsdfPdf + g.share * g.guide->pdf(g.region, wi);
+    return g.bsdf * bsdfPdf + g.guided * g.guide->pdf(g.region, wi);
 }
 
-// Samples the next direction (out.wi local, wi in world space) from the draws' lobe and
-// direction values; out.weight is f |cos| over the mixed density, out.pdf that density.
+// Samples the next direction (out.wi local, wi in world space); out.weight is f |cos| over the
+// density, out.pdf that density. Guided, the lobe value first decides, as the BSDF would, whether
+// a delta lobe is taken; if not, u.guide picks the guide (share) or the BSDF's non-delta lobes,
+// and the density is both strategies' together (one-sample MIS).
 inline bool sampleScatter(const ShadingPoint& s, const VertexDraws& u, const ScatterGuide& g, BsdfSample& out, Vec3& wi) {
-    if (g.share == 0.0f) {
+    if (g.share == 0.0f || u.guide >= g.share || s.bsdf.picksDelta(u.lobe)) {
         if (!s.bsdf.sample(s.wo, u.lobe, u.direction, out)) return false;
         wi = s.frame.toWorld(out.wi);
-        return true;
-    }
-    const float bsdfShare = 1.0f - g.share;
-    if (u.lobe < bsdfShare) { // the BSDF draws; its lobe choice reads the rest of the value
-        if (!s.bsdf.sample(s.wo, u.lobe / bsdfShare, u.direction, out)) return false;
-        wi = s.frame.toWorld(out.wi);
-        if (out.isDelta()) {
-            out.weight /= bsdfShare;
-            return true;
-        }
+        if (g.share == 0.0f || out.isDelta()) return true;
         const Spectrum fCos = out.weight * out.pdf;
-        out.pdf = bsdfShare * out.pdf + g.share * g.guide->pdf(g.region, wi);
+        out.pdf = scatterPdf(out.pdf, wi, g);
         out.weight = fCos / out.pdf;
         return true;
     }
@@ -62,7 +58,7 @@ inline bool sampleScatter(const ShadingPoint& s, const VertexDraws& u, const Sca
     out.wi = s.frame.toLocal(wi);
     float bsdfPdf;
     const Spectrum fCos = s.bsdf.evalPdf(s.wo, out.wi, bsdfPdf);
-    out.pdf = bsdfShare * bsdfPdf + g.share * guidePdf;
+    out.pdf = g.bsdf * bsdfPdf + g.guided * guidePdf;
     if (!(out.pdf > 0.0f) || isBlack(fCos)) return false;
     out.weight = fCos / out.pdf;
     out.lobe = s.bsdf.lobes() & (kLobeReflection | kLobeNonSpecular);
