@@ -258,6 +258,19 @@ int renderCommand(int argc, char** argv) {
         stopNote += ", " + std::to_string(film.convergedCount()) + " of " + std::to_string(uint64_t(window.width()) * window.height()) +
                     " pixels converged";
     if (result.outOfTime) stopNote += ", stopped by --time";
+    if (args.settings.guideSpp > 0) {
+        char guideText[120];
+        std::snprintf(guideText, sizeof guideText, ", guided (learnt from %u spp, %.1f MiB)", result.guideSpp,
+                      double(result.guideBytes) / (1 << 20));
+        stopNote += guideText;
+        if (!args.quiet && result.guideLimited)
+            std::fprintf(err, "pt: warning: the path guide reached its memory bound (%.0f MiB): its regions stopped "
+                              "splitting, so it is coarser than its samples would allow\n",
+                         double(result.guideBytes) / (1 << 20));
+        if (!args.quiet && args.guideSppGiven && result.guideSpp < args.settings.guideSpp)
+            std::fprintf(err, "pt: warning: --guide learnt from %u of its %u spp before a quarter of --time was spent\n",
+                         result.guideSpp, args.settings.guideSpp);
+    }
     char denoiseText[160] = "";
     if (denoiser) std::snprintf(denoiseText, sizeof denoiseText, ", denoised in %.3f s (OIDN %s)", denoised.seconds, denoiser->version().c_str());
     std::printf("pt: %dx%d, %s%s, %.3f s render (load %.3f s, bvh %.3f s)%s, %.2f Mrays/s "

@@ -139,6 +139,30 @@ TEST(PathGuide, RegionsSplitWhereSamplesCrowd) {
     }
 }
 
+// The memory bound: past it regions stop splitting, and the guide says so.
+TEST(PathGuide, StopsSplittingAtItsMemoryBound) {
+    auto crowd = [](PathGuide& guide) {
+        for (int pass = 0; pass < 4; ++pass) {
+            GuideRecorder tile;
+            for (int i = 0; i < 20000; ++i) {
+                Vec3 p(float(i % 97) / 97.0f, float(i % 89) / 89.0f, float(i % 83) / 83.0f);
+                tile.record(guide.recordKey(guide.regionAt(p, Vec3(0, 1, 0)), Vec3(0, 1, 0)), 1.0f);
+            }
+            tile.reduce();
+            guide.add(tile);
+            guide.endPass(100);
+        }
+    };
+    PathGuide free(Vec3(0.0f), Vec3(1.0f)), bounded(Vec3(0.0f), Vec3(1.0f), 16 << 10);
+    crowd(free);
+    crowd(bounded);
+    EXPECT_FALSE(free.limited());
+    EXPECT_TRUE(bounded.limited());
+    EXPECT_GT(free.regionCount(), 4 * bounded.regionCount());
+    EXPECT_LE(bounded.bytes(), size_t(16) << 10);
+    EXPECT_GT(free.bytes(), size_t(64) << 10);
+}
+
 // The lab's closed furnace: guided or not, the estimate is Le / (1 - a).
 TEST(PathGuide, GuidedFurnaceConvergesToTheSeries) {
     Scene scene = emptyScene(lookAt({0.1f, 0.05f, 0}, {0.1f, 0.05f, -1}, {0, 1, 0}, 90));

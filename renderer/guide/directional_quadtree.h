@@ -46,6 +46,7 @@ public:
     DirectionalQuadtree refined(float fraction) const;
 
     size_t nodeCount() const { return nodes_.size(); }
+    static constexpr size_t kNodeBytes = 32; // four energies, four children
     int depth() const;
 
 private:
@@ -57,6 +58,7 @@ private:
     void refineInto(DirectionalQuadtree& out, uint32_t at, int old, const float (&energy)[4], float least, int depth) const;
 
     std::vector<Node> nodes_; // a node's children come after it
+    static_assert(sizeof(Node) == kNodeBytes);
 };
 
 } // namespace pt

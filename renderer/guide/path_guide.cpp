@@ -27,7 +27,8 @@ void GuideRecorder::reduce() {
     records_.clear();
 }
 
-PathGuide::PathGuide(const Vec3& lo, const Vec3& hi) : nodes_(kFacings), regions_(kFacings) {
+PathGuide::PathGuide(const Vec3& lo, const Vec3& hi, size_t maxBytes)
+    : maxBytes_(maxBytes), nodes_(kFacings), regions_(kFacings) {
     for (uint32_t f = 0; f < kFacings; ++f) nodes_[f].region = f;
     const Vec3 extent = hi - lo;
     size_ = std::max({extent.x, extent.y, extent.z, 1e-6f}) * 1.0001f;
@@ -92,11 +93,23 @@ void PathGuide::endPass(uint64_t samplesToSplit) {
         r.learning.sumUp();
         // A region that learnt nothing this pass keeps what it knew.
         if (r.learning.energy() > 0.0f) r.learnt = std::move(r.learning);
+        r.learning = r.learnt.refined(kSplitShare);
     }
+    // Past the bound, regions stop splitting and the trees coarsen (a quadrant must hold twice
+    // the share to be split, again until they fit), keeping the energy they learnt.
+    for (float share = 2.0f * kSplitShare; bytes() > maxBytes_ && share <= 1.0f; share *= 2.0f) {
+        limited_ = true;
+        for (Region& r : regions_) {
+            r.learnt = r.learnt.refined(share);
+            r.learnt.sumUp();
+            r.learning = r.learnt.refined(share);
+        }
+    }
+    bytes_ = bytes();
     // Depth-first over the leaves as they are now; split() appends nodes and regions.
     const size_t leaves = nodes_.size();
     std::vector<int> depth(leaves, 0);
-    for (size_t n = 0; n < leaves; ++n) {
+    for (size_t n = 0; n < leaves && !limited_; ++n) {
         if (nodes_[n].child) {
             depth[nodes_[n].child] = depth[n] + 1;
             depth[nodes_[n].child + 1] = depth[n] + 1;
@@ -104,24 +117,36 @@ void PathGuide::endPass(uint64_t samplesToSplit) {
         }
         split(uint32_t(n), depth[n], regions_[nodes_[n].region].samples, samplesToSplit);
     }
-    for (Region& r : regions_) {
-        r.learning = r.learnt.refined(kSplitShare);
-        r.samples = 0;
-    }
+    for (Region& r : regions_) r.samples = 0;
 }
 
 // A leaf with more samples than `samplesToSplit` becomes two, each with a copy of what it learnt
-// and, as far as anyone knows, half its samples; again until none has too many.
+// and, as far as anyone knows, half its samples; again until none has too many. Past the memory
+// bound no region is made.
 void PathGuide::split(uint32_t node, int depth, uint64_t samples, uint64_t samplesToSplit) {
-    if (samples <= samplesToSplit || depth >= kMaxSpatialDepth) return;
+    if (samples <= samplesToSplit || depth >= kMaxSpatialDepth || limited_) return;
     const uint32_t region = nodes_[node].region, child = uint32_t(nodes_.size());
+    const Region& r = regions_[region];
+    const size_t cost =
+        (r.learnt.nodeCount() + r.learning.nodeCount()) * DirectionalQuadtree::kNodeBytes + sizeof(Region) + 2 * sizeof(Node);
+    if (bytes_ + cost > maxBytes_) {
+        limited_ = true;
+        return;
+    }
+    bytes_ += cost;
     nodes_.resize(nodes_.size() + 2);
     nodes_[node].child = child;
     nodes_[child].region = region;
     nodes_[child + 1].region = uint32_t(regions_.size());
-    regions_.push_back(Region{regions_[region].learnt, {}, 0});
+    regions_.push_back(Region{regions_[region].learnt, regions_[region].learning, 0});
     split(child, depth + 1, samples / 2, samplesToSplit);
     split(child + 1, depth + 1, samples / 2, samplesToSplit);
+}
+
+size_t PathGuide::bytes() const {
+    size_t quadtreeNodes = 0;
+    for (const Region& r : regions_) quadtreeNodes += r.learnt.nodeCount() + r.learning.nodeCount();
+    return quadtreeNodes * DirectionalQuadtree::kNodeBytes + nodes_.size() * sizeof(Node) + regions_.size() * sizeof(Region);
 }
 
 size_t PathGuide::directionalNodes() const {

@@ -40,8 +40,9 @@ private:
 
 class PathGuide {
 public:
-    // `lo`, `hi`: the scene's bounds; the tree covers the cube around them.
-    PathGuide(const Vec3& lo, const Vec3& hi);
+    // `lo`, `hi`: the scene's bounds; the tree covers the cube around them. Regions stop splitting
+    // once the trees take more than `maxBytes`.
+    PathGuide(const Vec3& lo, const Vec3& hi, size_t maxBytes = size_t(256) << 20);
 
     // The leaf region holding p on a surface facing `normal` (a point outside the cube goes to
     // the nearest region).
@@ -67,6 +68,9 @@ public:
 
     size_t regionCount() const { return regions_.size(); }
     size_t directionalNodes() const;
+    // The memory the guide takes, and whether it reached its bound (regions stopped splitting).
+    size_t bytes() const;
+    bool limited() const { return limited_; }
 
 private:
     // Surfaces facing different ways see light from different halves of the sphere: six trees,
@@ -86,6 +90,9 @@ private:
 
     Vec3 lo_;
     float size_;
+    size_t maxBytes_;
+    size_t bytes_ = 0; // while splitting: what the guide will take
+    bool limited_ = false;
     std::vector<Node> nodes_;
     std::vector<Region> regions_;
 };

@@ -76,7 +76,7 @@ RayCounts Renderer::renderPass(Film* film, uint32_t first, uint32_t last, Render
     return renderSamplesWith<IndependentSampler>(film, first, last, progress, startAt, seed, window, recorders);
 }
 
-RayCounts Renderer::trainGuide(RenderProgress* progress) {
+RayCounts Renderer::trainGuide(RenderProgress* progress, double seconds) {
     RayCounts rays;
     if (settings_.guideSpp == 0) return rays;
     Vec3 lo, hi;
@@ -87,10 +87,16 @@ RayCounts Renderer::trainGuide(RenderProgress* progress) {
     std::vector<GuideRecorder> recorders(tilesIn(full));
     // Samples of their own: the render's samples stay independent of the guide they are drawn by.
     const uint64_t seed = hashCombine(settings_.seed, 0x6775696465ULL);
+    const auto start = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     uint32_t first = 0;
+    double lastPass = 0.0;
     for (uint32_t size = 1; first + size <= settings_.guideSpp; first += size, size *= 2) {
         if (progress && progress->cancel.load()) break;
+        if (seconds > 0.0 && elapsed() + 2.0 * lastPass > seconds) break; // the next pass is twice the last
+        const double passStart = elapsed();
         rays += renderPass(nullptr, first, first + size, nullptr, nullptr, seed, full, &recorders);
+        lastPass = elapsed() - passStart;
         for (GuideRecorder& r : recorders) { // in tile order: the same tree on every run
             guide_->add(r);
             r.clear();
@@ -98,6 +104,7 @@ RayCounts Renderer::trainGuide(RenderProgress* progress) {
         // A region splits once a pass gives it more samples than this (Müller et al.'s
         // c sqrt(2^k), with c for pt's smaller images).
         guide_->endPass(uint64_t(kGuideSplitSamples * std::sqrt(double(size))));
+        guideSppTrained_ = first + size;
     }
     return rays;
 }
@@ -260,8 +267,14 @@ RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& c
     auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     arena.execute([&] {
-        // The guide is learnt first, inside the time budget: --guide's cost is the render's.
-        result.rays += renderer.trainGuide(progress);
+        // The guide is learnt first, inside the time budget (a quarter of it at most): --guide's
+        // cost is the render's.
+        result.rays += renderer.trainGuide(progress, budget.seconds / 4.0);
+        if (const PathGuide* guide = renderer.guide()) {
+            result.guideSpp = renderer.guideSppTrained();
+            result.guideBytes = guide->bytes();
+            result.guideLimited = guide->limited();
+        }
         double secondsPerPixelSample = 0.0; // of the last pass, for the time budget
         for (uint32_t first = begin; first < end;) {
             if (progress && progress->cancel.load()) break;

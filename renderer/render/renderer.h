@@ -54,8 +54,10 @@ public:
     // --guide: learns the path guide in passes of 1, 2, 4, ... samples per pixel of the whole
     // image (a crop's too, so that every part of a job learns the same guide), from samples of
     // their own (another seed), until settings.guideSpp are spent; the render's samples are then
-    // guided by it. Deterministic. Returns the rays traced; stops early on a cancel request.
-    RayCounts trainGuide(RenderProgress* progress = nullptr);
+    // guided by it. Deterministic. Returns the rays traced; stops early on a cancel request, and
+    // before a pass that would take it past `seconds` (0: no limit; a --time render's share).
+    RayCounts trainGuide(RenderProgress* progress = nullptr, double seconds = 0.0);
+    uint32_t guideSppTrained() const { return guideSppTrained_; }
     const PathGuide* guide() const { return guide_.get(); }
 
     size_t tileCount() const { return size_t(tilesX_) * tilesY_; }
@@ -84,6 +86,7 @@ private:
     PinholeCamera camera_;
     PathTracer tracer_;
     std::unique_ptr<PathGuide> guide_; // --guide
+    uint32_t guideSppTrained_ = 0;
     int width_, height_;
     PixelWindow window_;
     int tilesX_, tilesY_;
@@ -95,6 +98,11 @@ struct RenderResult {
     double seconds = 0.0; // wall-clock time of rendering, excluding scene load and BVH build
     bool cancelled = false;
     bool outOfTime = false; // stopped by the budget's seconds before the cap (or convergence)
+    // --guide: samples per pixel the guide learnt from, the memory it took, and whether that
+    // reached the guide's bound (its regions then stopped splitting).
+    uint32_t guideSpp = 0;
+    size_t guideBytes = 0;
+    bool guideLimited = false;
 };
 
 // What share of a job to render: samples [first, last) (last 0: all spp) of the pixels in
