@@ -550,6 +550,47 @@ def many_lights(n=64, size=40.0, lamp=0.1, height=1.2):
             f.write("newmtl Lamp%d\n\tKd 0 0 0\n\tKe %d %d %d\n\n" % ((k,) + ke))
 
 
+def lamp_shaft():
+    """A closed room whose lamp sits at the bottom of a narrow shaft: the room is lit by the patch
+    of ceiling the shaft throws light on, which next-event estimation cannot aim at and a
+    cosine-weighted bounce finds by chance. Where path guiding (--guide) pays."""
+    o = Obj()
+    room(o)
+    # The room is closed behind the camera, so that no sky comes in.
+    o.use("BackWall")
+    o.quad((-1, -1, 1.5), (-1, 1, 1.5), (1, 1, 1.5), (1, -1, 1.5))
+    o.use("LeftWall")
+    o.quad((-1, -1, 1.5), (-1, -1, 1), (-1, 1, 1), (-1, 1, 1.5))
+    o.use("RightWall")
+    o.quad((1, -1, 1), (1, -1, 1.5), (1, 1, 1.5), (1, 1, 1))
+    o.use("Floor")
+    o.quad((-1, -1, 1.5), (1, -1, 1.5), (1, -1, 1), (-1, -1, 1))
+    o.use("Ceiling")
+    o.quad((-1, 1, 1), (1, 1, 1), (1, 1, 1.5), (-1, 1, 1.5))
+    # The shaft: four walls, both sides, 0.3 wide and 1.2 tall, open at the top.
+    o.use("Shaft")
+    x0, x1, y0, y1 = -0.15, 0.15, -1.0, 0.2
+    corners = [(x0, x1), (x1, x1), (x1, x0), (x0, x0)]
+    for i in range(4):
+        (ax, az), (bx, bz) = corners[i], corners[(i + 1) % 4]
+        o.quad((ax, y0, az), (bx, y0, bz), (bx, y1, bz), (ax, y1, az))
+        o.quad((bx, y0, bz), (ax, y0, az), (ax, y1, az), (bx, y1, bz))
+    o.write(os.path.join(HERE, "lamp_shaft.obj"), "lamp_shaft.mtl",
+            "A room lit through a narrow shaft from a lamp at its bottom (path guiding's case)")
+    with open(os.path.join(HERE, "lamp_shaft.mtl"), "w") as f:
+        f.write("# Materials in the standard short keywords plus the lab's extensions.\n\n")
+        f.write("newlight Lamp\n\tlightposition 0.0 -0.9 0.0\n\tlightcolor 1.0 0.95 0.85\n"
+                "\tlightradius 0.03\n\tlightintensity 40\n\n")
+        f.write("newcamera Inside\n\tcameraposition 0.0 0.0 1.45\n\tcameratarget 0.0 0.0 0.0\n"
+                "\tcameraup 0.0 1.0 0.0\n\tcamerafov 70.0\n\n")
+        f.write("newmtl Floor\n\tKd 0.7 0.7 0.7\n\n")
+        f.write("newmtl Ceiling\n\tKd 0.8 0.8 0.8\n\n")
+        f.write("newmtl BackWall\n\tKd 0.7 0.7 0.7\n\n")
+        f.write("newmtl LeftWall\n\tKd 0.65 0.25 0.2\n\n")
+        f.write("newmtl RightWall\n\tKd 0.2 0.3 0.65\n\n")
+        f.write("newmtl Shaft\n\tKd 0.5 0.5 0.5\n")
+
+
 if __name__ == "__main__":
     cornell_box()
     glass()
@@ -560,4 +601,5 @@ if __name__ == "__main__":
     env_probe()
     outdoor()
     many_lights()
+    lamp_shaft()
     outdoor("sunlit", glass=False, sky=(("sunelevation", 30), ("sunazimuth", 220), ("turbidity", 3)))
