@@ -19,7 +19,8 @@ reading two noisy curves at one time.
 
 With --pt-noise C, pt also races with adaptive sampling: at N spp it renders with --noise
 C/sqrt(N), the target falling as the uniform error does, and --min-spp min(16, N); its error x
-seconds is reported beside the others (issue 27).
+seconds is reported beside the others (issue 27). With --pt-guide, pt also races with --guide, its
+training samples (a quarter of the count, at most 63) inside its time (issue 38).
 
 Writes bench/charts/race_NAME.csv and .png (error against seconds, both renderers) and prints
 seconds per sample and the equal-time error ratio. Run it with tools/crosscheck/race, which
@@ -55,10 +56,11 @@ def adaptive_args(a, spp):
     return ["--noise", f"{min(0.99, a.pt_noise / spp ** 0.5):.6g}", "--min-spp", str(min(16, spp))]
 
 
-def render_pt(a, spp, seed, tmp, adaptive=False):
+def render_pt(a, spp, seed, tmp, adaptive=False, guided=False):
     out = os.path.join(tmp, "pt.exr")
     cmd = [a.pt, "render", a.scene, "--camera", str(a.camera), "--res", a.res, "-spp", str(spp),
            "--seed", str(seed), "-o", out] + a.pt_args + (adaptive_args(a, spp) if adaptive else [])
+    cmd += ["--guide"] if guided else []  # its training (a quarter of spp, at most 63) is in its time
     text = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
     seconds = float(re.search(r"([0-9.]+) s render", text).group(1))
     return read_channels(out, RGB), seconds
@@ -91,11 +93,12 @@ def plot(rows, title, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(7.5, 5))
-    for name, style in (("pt", "o-"), ("mitsuba", "s-"), ("pt adaptive", "^-")):
+    for name, style in (("pt", "o-"), ("mitsuba", "s-"), ("pt adaptive", "^-"), ("pt guided", "d-")):
         pts = [(r["seconds"], r["rel_mse"]) for r in rows if r["renderer"] == name]
         if not pts:
             continue
-        label = {"pt": "pt", "pt adaptive": "pt --noise (target falling as 1/sqrt(spp))"}.get(
+        label = {"pt": "pt", "pt adaptive": "pt --noise (target falling as 1/sqrt(spp))",
+                 "pt guided": "pt --guide (its learning included)"}.get(
             name, f"Mitsuba {mi.__version__} LLVM path tracer")
         ax.loglog([p[0] for p in pts], [p[1] for p in pts], style, label=label, markersize=4)
     ax.set_title(f"{title}: error against render time")
@@ -123,6 +126,7 @@ def main():
     ap.add_argument("--pt-normals", action="store_true", help="as for mitsuba_lab.py (cornellbottle2)")
     ap.add_argument("--pt-noise", type=float, default=0.0,
                     help="also race pt with adaptive sampling, --noise C/sqrt(spp) at each spp (C: this value)")
+    ap.add_argument("--pt-guide", action="store_true", help="pt also races with --guide (issue 38)")
     ap.add_argument("--env")
     ap.add_argument("--env-rotate", type=float, default=0.0)
     ap.add_argument("--sky", action="store_true")
@@ -157,14 +161,15 @@ def main():
             while spp <= a.max_spp:
                 repeats = max(2, a.budget // spp)
                 render_mitsuba(scene, spp, 999)  # compiles (or finds) the kernel for this size
-                for renderer in ("pt", "mitsuba") + (("pt adaptive",) if a.pt_noise > 0 else ()):
+                for renderer in ("pt", "mitsuba") + (("pt adaptive",) if a.pt_noise > 0 else ()) + (
+                        ("pt guided",) if a.pt_guide else ()):
                     errors, seconds = [], []
                     for k in range(repeats):
                         seed = 1 + k
                         if renderer == "mitsuba":
                             img, s = render_mitsuba(scene, spp, seed)
                         else:
-                            img, s = render_pt(a, spp, seed, tmp, renderer == "pt adaptive")
+                            img, s = render_pt(a, spp, seed, tmp, renderer == "pt adaptive", renderer == "pt guided")
                         errors.append(relative_mse(img, ref))
                         seconds.append(s)
                     rows.append({"renderer": renderer, "spp": spp, "seconds": float(np.median(seconds)),
@@ -197,6 +202,10 @@ def main():
         w_ad = work("pt adaptive")
         print(f"{name}: pt adaptive: error x seconds {w_ad:.4g}: at equal time Mitsuba's error is {w_mi / w_ad:.2f}x, "
               f"uniform pt's {w_pt / w_ad:.2f}x adaptive pt's")
+    if any(r["renderer"] == "pt guided" for r in rows):
+        w_g = work("pt guided")
+        print(f"{name}: pt guided: error x seconds {w_g:.4g}: at equal time Mitsuba's error is {w_mi / w_g:.2f}x, "
+              f"unguided pt's {w_pt / w_g:.2f}x guided pt's")
 
 
 if __name__ == "__main__":
