@@ -45,9 +45,15 @@ expect 2 "option --noise: 2 is out of range [0, 1]" "$pt" render "$scene" --nois
 expect 2 "option --noise: expected a finite number" "$pt" render "$scene" --noise inf -o "$tmp/out.exr"
 expect 2 "--min-spp 64 is above -spp 32" "$pt" render "$scene" --noise 0.02 --min-spp 64 -spp 32 -o "$tmp/out.exr"
 expect 2 "--min-spp needs --noise" "$pt" render "$scene" --min-spp 4 -o "$tmp/out.exr"
+# --guide (issue 38): its training budget needs it, and is bounded.
+expect 2 "--guide-spp needs --guide" "$pt" render "$scene" --guide-spp 3 -o "$tmp/out.exr"
+expect 2 "option --guide-spp: 0 is out of range [1, 1023]" "$pt" render "$scene" --guide --guide-spp 0 -o "$tmp/out.exr"
+expect 2 "option --guide-spp: 2000 is out of range [1, 1023]" "$pt" render "$scene" --guide --guide-spp 2000 -o "$tmp/out.exr"
+expect 0 "guided (learnt from 3 spp" "$pt" render "$scene" --guide --guide-spp 3 -spp 4 --res 16x16 -o "$tmp/guided.exr"
 expect 2 "--noise decides per pixel from all of its samples" "$pt" render "$scene" --noise 0.02 --samples 0:8 -o "$tmp/out.exr"
 expect 2 "unknown layer \"sp\"; known: variance, albedo, normal, depth, spp" "$pt" render "$scene" --aov sp -o "$tmp/out.exr"
 expect 0 "--noise E" "$pt" render --help
+expect 0 "--guide-spp N" "$pt" render --help
 expect 0 "--time SECONDS" "$pt" render --help
 expect 1 "cannot open" "$pt" render "$tmp/missing.obj" -o "$tmp/out.exr"
 [[ -e "$tmp/out.exr" ]] && { echo "FAIL: a failed render left $tmp/out.exr"; failures=$((failures + 1)); }
