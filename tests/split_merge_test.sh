@@ -51,21 +51,28 @@ if grep -q "hold fewer than the job's 12 samples (the fewest 7); no whole-image 
   echo "ok   gap reported"; else echo "FAIL gap: $(cat gap.err)"; fail=1; fi
 
 # Interrupted and resumed: the partial of a render stopped by SIGTERM, finished by --resume,
-# equals the render that was never stopped. 512 spp takes a few seconds on 2 cores.
-long=(-spp 512 --res 64x48 --aov variance -q)
-stop_part_way "$pt" whole.exr "$root/scenes/cornell_box.obj" "${long[@]}"
-status=$?
-if [[ $status -eq 143 && -f whole.partial.exr && ! -f whole.exr ]]; then
-  run "$pt" render "$root/scenes/cornell_box.obj" "${long[@]}" --resume whole.partial.exr -o whole.exr
-  run "$pt" render "$root/scenes/cornell_box.obj" "${long[@]}" -o never_stopped.exr
-  exact resumed whole.exr never_stopped.exr
-  # Its samples are in whole.exr now: the partial is gone, so a merge of the folder cannot count them twice.
-  [[ ! -e whole.partial.exr ]] || { echo "FAIL resume: whole.partial.exr is still there"; fail=1; }
-elif [[ $status -eq 0 ]]; then
-  echo "FAIL resume: the render finished within a second; this test needs it to be stopped part-way"; fail=1
-else
-  echo "FAIL resume: exit status $status, partial $(ls whole.partial.exr 2>&1)"; fail=1
-fi
+# equals the render that was never stopped.
+# resumed_exactly NAME SCENE [render options...]: stops `render SCENE` part-way into NAME.exr,
+# resumes it, and holds it to the render never stopped.
+resumed_exactly() {
+  local name=$1 scene=$2 status
+  shift 2
+  stop_part_way "$pt" "$name.exr" "$scene" "$@"
+  status=$?
+  if [[ $status -eq 143 && -f $name.partial.exr && ! -f $name.exr ]]; then
+    run "$pt" render "$scene" "$@" --resume "$name.partial.exr" -o "$name.exr"
+    run "$pt" render "$scene" "$@" -o "${name}_never_stopped.exr"
+    exact "${name}_resumed" "$name.exr" "${name}_never_stopped.exr"
+    # Its samples are in NAME.exr now: the partial is gone, so a merge of the folder cannot count them twice.
+    [[ ! -e $name.partial.exr ]] || { echo "FAIL $name resume: $name.partial.exr is still there"; fail=1; }
+  elif [[ $status -eq 0 ]]; then
+    echo "FAIL $name resume: the render finished within a second; this test needs it to be stopped part-way"; fail=1
+  else
+    echo "FAIL $name resume: exit status $status, partial $(ls "$name.partial.exr" 2>&1)"; fail=1
+  fi
+}
+# 512 spp takes a few seconds on 2 cores.
+resumed_exactly whole "$root/scenes/cornell_box.obj" -spp 512 --res 64x48 --aov variance -q
 # Interrupted during the first pass (issue 35: nothing was kept, though the README promised half
 # the work): the tiles finished are in the partial (pt:spp 0, pt:sppMax 1), the others hold no
 # sample, and --resume finishes it into the image never stopped. One thread makes the first pass
@@ -104,16 +111,5 @@ if "$pt" merge g0.exr plain1.exr -q -o mixed.exr 2>mixed.err >/dev/null; then
   echo "FAIL guided and unguided parts merged"; fail=1
 elif grep -q "pt:guideSpp" mixed.err; then echo "ok   guided and unguided parts refused: $(head -c 160 mixed.err)"
 else echo "FAIL guided and unguided parts: $(cat mixed.err)"; fail=1; fi
-glong=(-spp 512 --res 64x48 --aov variance -q --guide --guide-spp 15)
-stop_part_way "$pt" gwhole.exr "$gscene" "${glong[@]}"
-status=$?
-if [[ $status -eq 143 && -f gwhole.partial.exr && ! -f gwhole.exr ]]; then
-  run "$pt" render "$gscene" "${glong[@]}" --resume gwhole.partial.exr -o gwhole.exr
-  run "$pt" render "$gscene" "${glong[@]}" -o gnever_stopped.exr
-  exact guided_resumed gwhole.exr gnever_stopped.exr
-elif [[ $status -eq 0 ]]; then
-  echo "FAIL guided resume: the render finished within a second; this test needs it to be stopped part-way"; fail=1
-else
-  echo "FAIL guided resume: exit status $status, partial $(ls gwhole.partial.exr 2>&1)"; fail=1
-fi
+resumed_exactly guided "$gscene" -spp 512 --res 64x48 --aov variance -q --guide --guide-spp 15
 exit $fail

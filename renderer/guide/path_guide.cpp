@@ -42,27 +42,27 @@ uint32_t PathGuide::facing(const Vec3& n) {
     return uint32_t(2 * axis + (n[axis] < 0.0f));
 }
 
-uint32_t PathGuide::regionAt(const Vec3& p, const Vec3& normal) const {
+// The leaf node holding p on a surface facing `normal`, and how many halvings led to it.
+uint32_t PathGuide::leafAt(const Vec3& p, const Vec3& normal, int& depth) const {
     Vec3 x = (p - lo_) / size_; // in the unit cube
     uint32_t n = facing(normal);
-    for (int axis = 0;; axis = axis == 2 ? 0 : axis + 1) {
-        const Node& node = nodes_[n];
-        if (node.child == 0) return node.region;
-        const int upper = x[axis] >= 0.5f;
-        x[axis] = 2.0f * x[axis] - float(upper);
-        n = node.child + uint32_t(upper);
-    }
-}
-
-int PathGuide::depthAt(const Vec3& p, const Vec3& normal) const {
-    Vec3 x = (p - lo_) / size_;
-    uint32_t n = facing(normal);
-    int depth = 0;
+    depth = 0;
     for (int axis = 0; nodes_[n].child != 0; axis = axis == 2 ? 0 : axis + 1, ++depth) {
         const int upper = x[axis] >= 0.5f;
         x[axis] = 2.0f * x[axis] - float(upper);
         n = nodes_[n].child + uint32_t(upper);
     }
+    return n;
+}
+
+uint32_t PathGuide::regionAt(const Vec3& p, const Vec3& normal) const {
+    int depth;
+    return nodes_[leafAt(p, normal, depth)].region;
+}
+
+int PathGuide::depthAt(const Vec3& p, const Vec3& normal) const {
+    int depth;
+    leafAt(p, normal, depth);
     return depth;
 }
 

@@ -78,6 +78,7 @@ private:
     // distribution is not spread over directions half of its surfaces cannot take.
     static constexpr uint32_t kFacings = 6;
     static uint32_t facing(const Vec3& n);
+    uint32_t leafAt(const Vec3& p, const Vec3& normal, int& depth) const;
     struct Node {
         uint32_t child = 0;  // children at child and child + 1; 0: a leaf
         uint32_t region = 0; // a leaf's region

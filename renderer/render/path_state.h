@@ -66,13 +66,18 @@ struct PathState {
     FirstHit first;
     GuidePath* guide = nullptr; // a training pass's record of the path, or none
 
-    // Adds light the path found to its estimate (and, in training, to the vertices before).
-    // Emitted light that next-event estimation could have sampled from the vertex the path just
-    // left is not that vertex's to learn: the guide is for the light NEE cannot find, and
-    // learning the lamps would send guided samples where NEE already looks.
-    void addRadiance(const Spectrum& contribution, bool neeCovers = false) {
+    // Adds light the path found to its estimate and, in training, to its first `credited`
+    // recorded vertices.
+    void addRadiance(const Spectrum& contribution, int credited) {
         L += contribution;
-        if (guide) [[unlikely]] guide->credit(contribution, guide->count - int(neeCovers && guide->lastIsPrevious));
+        if (guide) [[unlikely]] guide->credit(contribution, credited);
+    }
+    // Emitted light the path found along its ray: every recorded vertex learns from it, except
+    // that light next-event estimation could have sampled from the vertex the path just left is
+    // not that vertex's to learn: the guide is for the light NEE cannot find, and learning the
+    // lamps would send guided samples where NEE already looks.
+    void addEmitted(const Spectrum& contribution, bool neeCovers) {
+        addRadiance(contribution, guide ? guide->count - int(neeCovers && guide->lastIsPrevious) : 0);
     }
 };
 

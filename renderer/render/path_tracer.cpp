@@ -22,17 +22,16 @@ constexpr float kGuideShare = 0.5f;  // of the directions at a guided vertex (MÃ
 } // namespace
 
 template <typename Sampler>
-float PathTracer::hitWeight(const PathState<Sampler>& path, uint32_t emitter, float distance) const {
-    const bool sampleLights = settings_.lightSampling != LightSampling::Bsdf && !lights_.empty();
-    if (path.deltaBefore || !sampleLights || emitter == ~0u) return 1.0f;
-    if (settings_.lightSampling != LightSampling::Mis) return 0.0f; // next-event estimation already counted it
-    float lightPdf = lights_.pmf(emitter, path.prevP, path.prevN) * lights_.pdf(emitter, path.prevP, path.ray.dir, distance);
-    return powerHeuristic(path.prevPdf, lightPdf);
+bool PathTracer::neeCovers(const PathState<Sampler>& path, uint32_t emitter) const {
+    return !path.deltaBefore && settings_.lightSampling != LightSampling::Bsdf && !lights_.empty() && emitter != ~0u;
 }
 
 template <typename Sampler>
-bool PathTracer::neeCovers(const PathState<Sampler>& path, uint32_t emitter) const {
-    return !path.deltaBefore && settings_.lightSampling != LightSampling::Bsdf && !lights_.empty() && emitter != ~0u;
+float PathTracer::hitWeight(const PathState<Sampler>& path, uint32_t emitter, float distance) const {
+    if (!neeCovers(path, emitter)) return 1.0f;
+    if (settings_.lightSampling != LightSampling::Mis) return 0.0f; // next-event estimation already counted it
+    float lightPdf = lights_.pmf(emitter, path.prevP, path.prevN) * lights_.pdf(emitter, path.prevP, path.ray.dir, distance);
+    return powerHeuristic(path.prevPdf, lightPdf);
 }
 
 // Shade stage, step 1: the ray left the scene. What the environment and the sun's disk send
@@ -43,10 +42,10 @@ void PathTracer::escape(PathState<Sampler>& path, bool firstHits) const {
     // Seen through a mirror or glass, the sky is what a camera ray that misses sees: no surface.
     if (firstHits && path.first.open) path.first.albedo = Spectrum(0.0f), path.first.normal = Vec3(0.0f);
     const Environment& env = scene_.environment;
-    path.addRadiance(path.beta * env.radiance(ray.dir) * hitWeight(path, lights_.environmentEmitter(), kInf),
+    path.addEmitted(path.beta * env.radiance(ray.dir) * hitWeight(path, lights_.environmentEmitter(), kInf),
                      neeCovers(path, lights_.environmentEmitter()));
     if (env.sun && env.sun->covers(ray.dir))
-        path.addRadiance(path.beta * env.sun->radiance * hitWeight(path, lights_.sunEmitter(), kInf),
+        path.addEmitted(path.beta * env.sun->radiance * hitWeight(path, lights_.sunEmitter(), kInf),
                          neeCovers(path, lights_.sunEmitter()));
 }
 
@@ -62,7 +61,7 @@ void PathTracer::hitSphereLight(PathState<Sampler>& path, const Hit& hit, bool f
         path.first.open = false;
     }
     const uint32_t e = lights_.emitterOfLight(hit.prim);
-    path.addRadiance(path.beta * std::get<SphereEmitter>(lights_.emitter(e)).radiance * hitWeight(path, e, hit.t),
+    path.addEmitted(path.beta * std::get<SphereEmitter>(lights_.emitter(e)).radiance * hitWeight(path, e, hit.t),
                      neeCovers(path, e));
 }
 
@@ -194,7 +193,7 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
     }
     if (m.isEmissive()) { // emission found by the path, weighed against next-event estimation
         const uint32_t e = lights_.emitterOfTriangle(hit.prim);
-        path.addRadiance(path.beta * emittedRadiance(m, *scene_.textures, sp.uv, sp.footprint) * hitWeight(path, e, hit.t),
+        path.addEmitted(path.beta * emittedRadiance(m, *scene_.textures, sp.uv, sp.footprint) * hitWeight(path, e, hit.t),
                          neeCovers(path, e));
     }
     if (depth == settings_.maxDepth) return false;
@@ -273,11 +272,7 @@ void PathTracer::trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& cou
         // Shadow: a light sample's contribution counts where nothing blocks its ray. Added before
         // the path's next hit is shaded, as one path alone would.
         for (const ShadowQuery& q : shadows)
-            if (!accel_.occluded(q.ray, q.distance, q.skipLight)) {
-                PathState<Sampler>& p = paths[q.path];
-                p.L += q.contribution;
-                if (p.guide) [[unlikely]] p.guide->credit(q.contribution, q.guideVertices);
-            }
+            if (!accel_.occluded(q.ray, q.distance, q.skipLight)) paths[q.path].addRadiance(q.contribution, q.guideVertices);
         // Intersect: the continuing paths' next rays.
         for (uint32_t i : active) hits[i] = accel_.intersect(paths[i].ray);
     }

@@ -60,8 +60,7 @@ Renderer::Renderer(const Scene& scene, const Accel& accel, const Camera& camera,
     : scene_(scene), accel_(accel), settings_(settings), triangles_(buildShadingTriangles(scene)), tangents_(buildCornerTangents(scene)),
       lights_(scene, settings.lightChoice), camera_(camera, width, height),
       tracer_(scene, triangles_, tangents_, accel, lights_, settings_, pixelSpread(camera, height, spp)),
-      width_(width), height_(height), window_(window.empty() ? PixelWindow{0, 0, width, height} : window),
-      tilesX_((window_.width() + kTileSize - 1) / kTileSize), tilesY_((window_.height() + kTileSize - 1) / kTileSize) {}
+      width_(width), height_(height), window_(window.empty() ? PixelWindow{0, 0, width, height} : window) {}
 
 RayCounts Renderer::renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress,
                                   const std::vector<uint32_t>* startAt) const {
@@ -192,15 +191,16 @@ RayCounts Renderer::renderSamplesWith(Film* film, uint32_t first, uint32_t last,
                         }
                 if (!batch.paths.empty()) traceBatch();
                 if (recorder) recorder->reduce();
-                if (film)
-                for (int y = y0; y < y1; ++y)
-                    for (int x = x0; x < x1; ++x) {
-                        const int k = (y - y0) * tileWidth + (x - x0);
-                        if (begin[k] >= last) continue; // a resumed pixel that already has them all
-                        const PixelSums& p = sums[k];
-                        film->add(filmPixel(x, y), p.sum, p.sumSq, last - begin[k]);
-                        if (layers) film->addFirstHit(filmPixel(x, y), p.albedo, p.normal, p.depth, p.hits);
-                    }
+                if (film) {
+                    for (int y = y0; y < y1; ++y)
+                        for (int x = x0; x < x1; ++x) {
+                            const int k = (y - y0) * tileWidth + (x - x0);
+                            if (begin[k] >= last) continue; // a resumed pixel that already has them all
+                            const PixelSums& p = sums[k];
+                            film->add(filmPixel(x, y), p.sum, p.sumSq, last - begin[k]);
+                            if (layers) film->addFirstHit(filmPixel(x, y), p.albedo, p.normal, p.depth, p.hits);
+                        }
+                }
                 if (progress) progress->done.fetch_add(last - first, std::memory_order_relaxed);
             }
         },

@@ -60,7 +60,7 @@ public:
     uint32_t guideSppTrained() const { return guideSppTrained_; }
     const PathGuide* guide() const { return guide_.get(); }
 
-    size_t tileCount() const { return size_t(tilesX_) * tilesY_; }
+    size_t tileCount() const { return tilesIn(window_); }
     const PixelWindow& window() const { return window_; }
 
 private:
@@ -89,7 +89,6 @@ private:
     uint32_t guideSppTrained_ = 0;
     int width_, height_;
     PixelWindow window_;
-    int tilesX_, tilesY_;
 };
 
 struct RenderResult {

@@ -16,8 +16,8 @@ namespace pt {
 struct ScatterGuide {
     const PathGuide* guide = nullptr;
     uint32_t region = 0;
-    float share = 0.0f;  // of the draws that do not take a delta lobe, the guide's
-    float bsdf = 1.0f;   // 1 - share: the BSDF's non-delta density counts this much
+    float share = 0.0f;  // of the draws that do not take a delta lobe, the guide's; the BSDF's
+                         // non-delta density counts 1 - share
     float guided = 0.0f; // share (1 - the BSDF's delta share): the guide's density counts this much
 };
 
@@ -30,13 +30,13 @@ inline ScatterGuide scatterGuideAt(const PathGuide* guide, const Vec3& p, const 
     if (!guide || !(lobes & kLobeNonSpecular) || (lobes & kLobeTransmission)) return {};
     const uint32_t region = guide->regionAt(p, n);
     if (!guide->trained(region)) return {guide, region};
-    return {guide, region, share, 1.0f - share, share * (1.0f - bsdf.deltaShare())};
+    return {guide, region, share, share * (1.0f - bsdf.deltaShare())};
 }
 
 // The density of the world direction wi, given the BSDF's own (non-delta) density.
 inline float scatterPdf(float bsdfPdf, const Vec3& wi, const ScatterGuide& g) {
     if (g.share == 0.0f) return bsdfPdf;
-    return g.bsdf * bsdfPdf + g.guided * g.guide->pdf(g.region, wi);
+    return (1.0f - g.share) * bsdfPdf + g.guided * g.guide->pdf(g.region, wi);
 }
 
 // Samples the next direction (out.wi local, wi in world space); out.weight is f |cos| over the
@@ -58,7 +58,7 @@ inline bool sampleScatter(const ShadingPoint& s, const VertexDraws& u, const Sca
     out.wi = s.frame.toLocal(wi);
     float bsdfPdf;
     const Spectrum fCos = s.bsdf.evalPdf(s.wo, out.wi, bsdfPdf);
-    out.pdf = g.bsdf * bsdfPdf + g.guided * guidePdf;
+    out.pdf = (1.0f - g.share) * bsdfPdf + g.guided * guidePdf;
     if (!(out.pdf > 0.0f) || isBlack(fCos)) return false;
     out.weight = fCos / out.pdf;
     out.lobe = s.bsdf.lobes() & (kLobeReflection | kLobeNonSpecular);
