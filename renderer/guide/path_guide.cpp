@@ -105,7 +105,7 @@ void PathGuide::endPass(uint64_t samplesToSplit) {
             r.learning = r.learnt.refined(share);
         }
     }
-    bytes_ = bytes();
+    size_t bytesAfter = bytes(); // what the guide will take, as split() adds to it
     // Depth-first over the leaves as they are now; split() appends nodes and regions.
     const size_t leaves = nodes_.size();
     std::vector<int> depth(leaves, 0);
@@ -115,7 +115,7 @@ void PathGuide::endPass(uint64_t samplesToSplit) {
             depth[nodes_[n].child + 1] = depth[n] + 1;
             continue;
         }
-        split(uint32_t(n), depth[n], regions_[nodes_[n].region].samples, samplesToSplit);
+        split(uint32_t(n), depth[n], regions_[nodes_[n].region].samples, samplesToSplit, bytesAfter);
     }
     for (Region& r : regions_) r.samples = 0;
 }
@@ -123,24 +123,24 @@ void PathGuide::endPass(uint64_t samplesToSplit) {
 // A leaf with more samples than `samplesToSplit` becomes two, each with a copy of what it learnt
 // and, as far as anyone knows, half its samples; again until none has too many. Past the memory
 // bound no region is made.
-void PathGuide::split(uint32_t node, int depth, uint64_t samples, uint64_t samplesToSplit) {
+void PathGuide::split(uint32_t node, int depth, uint64_t samples, uint64_t samplesToSplit, size_t& bytes) {
     if (samples <= samplesToSplit || depth >= kMaxSpatialDepth || limited_) return;
     const uint32_t region = nodes_[node].region, child = uint32_t(nodes_.size());
     const Region& r = regions_[region];
     const size_t cost =
         (r.learnt.nodeCount() + r.learning.nodeCount()) * DirectionalQuadtree::kNodeBytes + sizeof(Region) + 2 * sizeof(Node);
-    if (bytes_ + cost > maxBytes_) {
+    if (bytes + cost > maxBytes_) {
         limited_ = true;
         return;
     }
-    bytes_ += cost;
+    bytes += cost;
     nodes_.resize(nodes_.size() + 2);
     nodes_[node].child = child;
     nodes_[child].region = region;
     nodes_[child + 1].region = uint32_t(regions_.size());
     regions_.push_back(Region{regions_[region].learnt, regions_[region].learning, 0});
-    split(child, depth + 1, samples / 2, samplesToSplit);
-    split(child + 1, depth + 1, samples / 2, samplesToSplit);
+    split(child, depth + 1, samples / 2, samplesToSplit, bytes);
+    split(child + 1, depth + 1, samples / 2, samplesToSplit, bytes);
 }
 
 size_t PathGuide::bytes() const {

@@ -87,12 +87,11 @@ private:
         DirectionalQuadtree learnt, learning;
         uint64_t samples = 0; // received this pass
     };
-    void split(uint32_t node, int depth, uint64_t samples, uint64_t samplesToSplit);
+    void split(uint32_t node, int depth, uint64_t samples, uint64_t samplesToSplit, size_t& bytes);
 
     Vec3 lo_;
     float size_;
     size_t maxBytes_;
-    size_t bytes_ = 0; // while splitting: what the guide will take
     bool limited_ = false;
     std::vector<Node> nodes_;
     std::vector<Region> regions_;
