@@ -163,6 +163,39 @@ TEST(PathGuide, StopsSplittingAtItsMemoryBound) {
     EXPECT_GT(free.bytes(), size_t(64) << 10);
 }
 
+// The share a region learns (ShareMoments::best) from guided samples drawn at the training share,
+// in one dimension: the BSDF draws t uniformly on [0, 1], the guide with density 5 t^4. Where the
+// integrand is the guide's shape, the largest share wins, unless a guided vertex costs too much;
+// where it is the BSDF's, no share does; where it is half of each, the
+// half share, whose density is the integrand.
+float learntShare(float integrandGuide, double guidedCost) {
+    uint64_t state = 777;
+    auto next = [&] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return float((state >> 40) * 0x1p-24);
+    };
+    GuideRecorder tile;
+    for (int i = 0; i < 20000; ++i) {
+        const float u = next();
+        const float t = std::max(next() < kTrainingShare ? std::pow(u, 0.2f) : u, 1e-4f);
+        const float bsdfPdf = 1.0f, guidePdf = 5.0f * std::pow(t, 4.0f);
+        const float pdf = (1.0f - kTrainingShare) * bsdfPdf + kTrainingShare * guidePdf;
+        const float g = integrandGuide * guidePdf + (1.0f - integrandGuide) * bsdfPdf;
+        tile.recordShare(0, g / pdf, pdf, bsdfPdf, guidePdf);
+    }
+    tile.reduce();
+    EXPECT_EQ(tile.shareSums().size(), 1u);
+    EXPECT_EQ(tile.shareSums()[0].second.count, 20000.0);
+    return tile.shareSums()[0].second.best(guidedCost);
+}
+
+TEST(PathGuide, RegionsLearnTheShareThatSamplesTheirLightBest) {
+    EXPECT_EQ(learntShare(1.0f, 1.25), 0.9f) << "the guide is the integrand's shape";
+    EXPECT_EQ(learntShare(1.0f, 1e6), 0.0f) << "a guided vertex costs more than it saves";
+    EXPECT_EQ(learntShare(0.0f, 1.0), 0.0f) << "the BSDF is the integrand's shape";
+    EXPECT_EQ(learntShare(0.5f, 1.0), 0.5f) << "the integrand is the training mixture: its share samples it exactly";
+}
+
 // The lab's closed furnace: guided or not, the estimate is Le / (1 - a).
 TEST(PathGuide, GuidedFurnaceConvergesToTheSeries) {
     Scene scene = emptyScene(lookAt({0.1f, 0.05f, 0}, {0.1f, 0.05f, -1}, {0, 1, 0}, 90));

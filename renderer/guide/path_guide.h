@@ -18,13 +18,38 @@
 
 namespace pt {
 
+// The guide's shares of a guided vertex's draws that a region may learn to use (the first, none:
+// the region is not guided), and the one training draws with, which the choice is learnt from.
+inline constexpr float kGuideShares[] = {0.0f, 0.25f, 0.5f, 0.75f, 0.9f};
+inline constexpr int kGuideShareCount = 5;
+inline constexpr float kTrainingShare = 0.5f;
+
+// How well each share would sample a region's light, from guided samples x = f cos L / p drawn
+// with density p: their count, sum, and for each share the second moment its own density q would
+// give, the sum of x^2 p / q (an unbiased estimate of the integral of (f cos L)^2 / q over p's
+// samples).
+struct ShareMoments {
+    double count = 0.0, sum = 0.0;
+    double second[kGuideShareCount] = {};
+    void add(const ShareMoments& o);
+    // The share whose variance times its cost is least; a guided vertex costs `guidedCost` times
+    // an unguided one.
+    float best(double guidedCost) const;
+};
+
 // One tile's share of a training pass: (where, energy) pairs as the paths leave them, reduced by
-// reduce() to one energy and count per place, in the order they were recorded.
+// reduce() to one energy and count per place, in the order they were recorded; and per region
+// the samples that measure which share to guide with.
 class GuideRecorder {
 public:
     void record(uint64_t key, float energy) { records_.emplace_back(key, energy); }
+    // A guided sample at `region`: x = f cos L over its density `pdf`, whose parts were the BSDF's
+    // density `bsdfPdf` and the guide's `guidePdf` (scatter.h's ScatterParts).
+    void recordShare(uint32_t region, float x, float pdf, float bsdfPdf, float guidePdf) {
+        shareRecords_.push_back({region, x, pdf, bsdfPdf, guidePdf});
+    }
     void reduce();
-    void clear() { records_.clear(), sums_.clear(); }
+    void clear() { records_.clear(), sums_.clear(), shareRecords_.clear(), shareSums_.clear(); }
 
     struct Sum {
         uint64_t key;
@@ -32,10 +57,17 @@ public:
         uint32_t count;
     };
     const std::vector<Sum>& sums() const { return sums_; }
+    const std::vector<std::pair<uint32_t, ShareMoments>>& shareSums() const { return shareSums_; }
 
 private:
+    struct ShareRecord {
+        uint32_t region;
+        float x, pdf, bsdfPdf, guidePdf;
+    };
     std::vector<std::pair<uint64_t, float>> records_;
     std::vector<Sum> sums_;
+    std::vector<ShareRecord> shareRecords_;
+    std::vector<std::pair<uint32_t, ShareMoments>> shareSums_;
 };
 
 class PathGuide {
@@ -49,6 +81,9 @@ public:
     uint32_t regionAt(const Vec3& p, const Vec3& normal) const;
     // Whether the region has learnt anything to sample from.
     bool trained(uint32_t region) const { return regions_[region].learnt.energy() > 0.0f; }
+    // The guide's share of a draw at the region (0: not guided there): learnt in training, from
+    // how well each of kGuideShares would have sampled the region's light, against its cost.
+    float share(uint32_t region) const { return trained(region) ? regions_[region].share : 0.0f; }
     // A world direction drawn from the region's learnt distribution, with its solid-angle density.
     Vec3 sample(uint32_t region, Vec2 u, float& pdf) const;
     float pdf(uint32_t region, const Vec3& dir) const;
@@ -85,7 +120,9 @@ private:
     };
     struct Region {
         DirectionalQuadtree learnt, learning;
-        uint64_t samples = 0; // received this pass
+        uint64_t samples = 0;          // received this pass
+        float share = kTrainingShare;  // the guide's share of a draw here
+        ShareMoments moments;          // this pass's measure of the shares
     };
     void split(uint32_t node, int depth, uint64_t samples, uint64_t samplesToSplit, size_t& bytes);
 

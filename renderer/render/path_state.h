@@ -29,6 +29,10 @@ struct GuideVertex {
     Vec3 dir;           // world direction the path left in
     float pdf;          // its density
     Spectrum betaAfter; // throughput after this vertex's BSDF weight (before roulette)
+    Spectrum fCos;      // the BSDF's value times the cosine: what the light back along dir is learnt times
+    float bsdfPdf;      // where the vertex was guided (share > 0), the density's two parts
+    float guidePdf;     // (scatter.h's ScatterParts)
+    float share;        // the guide's share of the draw, 0 where the region had learnt nothing yet
     Spectrum radiance{0.0f};
 };
 struct GuidePath {

@@ -17,7 +17,6 @@ inline float powerHeuristic(float pdfA, float pdfB) {
 
 constexpr int kRouletteDepth = 3; // scattering events before Russian roulette starts
 constexpr size_t kPrefetchAhead = 4; // paths between a shading record's prefetch and its use
-constexpr float kGuideShare = 0.5f;  // of the directions at a guided vertex (Müller et al.'s fixed choice)
 
 } // namespace
 
@@ -123,7 +122,8 @@ bool PathTracer::continuePath(PathState<Sampler>& path, const SurfacePoint& sp, 
     const Ray& ray = path.ray;
     BsdfSample bs;
     Vec3 wi;
-    if (!sampleScatter(shading, u, guide, bs, wi)) return false;
+    ScatterParts parts;
+    if (!sampleScatter(shading, u, guide, bs, wi, parts)) return false;
     if ((glm::dot(wi, ng) > 0.0f) != (bs.wi.z > 0.0f)) return false; // see sampleLight's side note
     if (m.volume && glm::dot(wi, sp.ng) * glm::dot(ray.dir, sp.ng) > 0.0f) // crossed a volume's surface
         path.medium = mediumAfterCrossing(path.medium, sp.material, m, wi, sp.ng);
@@ -139,7 +139,9 @@ bool PathTracer::continuePath(PathState<Sampler>& path, const SurfacePoint& sp, 
     // Training: the light that comes back along wi is what this vertex learns from.
     if (path.guide) {
         const bool record = guide.guide && !bs.isDelta() && path.guide->count < GuidePath::kMaxVertices;
-        if (record) path.guide->vertices[path.guide->count++] = GuideVertex{guide.region, wi, bs.pdf, path.beta};
+        if (record)
+            path.guide->vertices[path.guide->count++] =
+                GuideVertex{guide.region, wi, bs.pdf, path.beta, bs.weight * bs.pdf, parts.bsdf, parts.guide, guide.share};
         path.guide->lastIsPrevious = record;
     }
 
@@ -209,7 +211,9 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
         path.first.open = !bsdf.hasNonDelta() && !bsdf.isBlack();
     }
     if (bsdf.isBlack()) return false;
-    const ScatterGuide guide = guide_ ? scatterGuideAt(guide_, sp.p, shading.wo.z >= 0.0f ? shading.frame.n : -shading.frame.n, bsdf, kGuideShare) : ScatterGuide{};
+    const ScatterGuide guide =
+        guide_ ? scatterGuideAt(guide_, sp.p, shading.wo.z >= 0.0f ? shading.frame.n : -shading.frame.n, bsdf, path.guide != nullptr)
+               : ScatterGuide{};
     if (settings_.lightSampling != LightSampling::Bsdf && !lights_.empty() && bsdf.hasNonDelta())
         sampleLight(path, sp, m, shading, guide, ng, u, slot, shadows, counts);
     return continuePath(path, sp, m, shading, guide, ng, u, firstHits, counts);
@@ -276,13 +280,19 @@ void PathTracer::trace(PathBatch<Sampler>& batch, bool firstHits, RayCounts& cou
         // Intersect: the continuing paths' next rays.
         for (uint32_t i : active) hits[i] = accel_.intersect(paths[i].ray);
     }
-    if (recorder) // what each guidable vertex learns: the light back along its direction, over its density
+    // What each guidable vertex learns: the light back along its direction times the BSDF and the
+    // cosine, over its density. The product, not the light alone, is what the vertex's estimate
+    // integrates: learnt, the guide leaves out grazing directions and the BSDF's dark ones.
+    if (recorder)
         for (const PathState<Sampler>& p : paths) {
             if (!isFinite(p.L)) continue;
             for (int i = 0; i < p.guide->count; ++i) {
                 const GuideVertex& v = p.guide->vertices[i];
-                const float energy = average(v.radiance) / v.pdf;
-                if (std::isfinite(energy) && energy >= 0.0f) recorder->record(guide_->recordKey(v.region, v.dir), energy);
+                const float energy = average(v.fCos * v.radiance) / v.pdf;
+                if (!(std::isfinite(energy) && energy >= 0.0f)) continue;
+                recorder->record(guide_->recordKey(v.region, v.dir), energy);
+                // And, where it was guided, how well each share would have sampled that light.
+                if (v.share > 0.0f) recorder->recordShare(v.region, energy, v.pdf, v.bsdfPdf, v.guidePdf);
             }
         }
     for (PathState<Sampler>& p : paths) {

@@ -16,40 +16,52 @@ namespace pt {
 struct ScatterGuide {
     const PathGuide* guide = nullptr;
     uint32_t region = 0;
-    float share = 0.0f;  // of the draws that do not take a delta lobe, the guide's; the BSDF's
-                         // non-delta density counts 1 - share
-    float guided = 0.0f; // share (1 - the BSDF's delta share): the guide's density counts this much
+    float share = 0.0f;    // of the draws that do not take a delta lobe, the guide's
+    float nonDelta = 0.0f; // 1 - the BSDF's delta share: the chance of a draw that may be guided
+};
+
+// A non-delta direction's density in its two strategies' parts: the BSDF's own density, and the
+// guide's times the chance that a draw takes no delta lobe. Mixed, they count 1 - share and share.
+struct ScatterParts {
+    float bsdf = 0.0f, guide = 0.0f;
+    float mixed(float share) const { return (1.0f - share) * bsdf + share * guide; }
 };
 
 // Guided where the BSDF has a non-specular lobe and transmits nothing: the guide's directions
 // that a reflecting surface cannot take are wasted, and a transmitting one's refraction is the
 // BSDF's to sample. Its delta lobes keep the chance the BSDF gives them: a caustic is a diffuse
-// bounce the guide aims, followed by a mirror the BSDF must still take as often as before.
-inline ScatterGuide scatterGuideAt(const PathGuide* guide, const Vec3& p, const Vec3& n, const Bsdf& bsdf, float share) {
+// bounce the guide aims, followed by a mirror the BSDF must still take as often as before. The
+// guide's share is the one its region learnt (none where guiding did not pay), or in training
+// the fixed share the choice is learnt from.
+inline ScatterGuide scatterGuideAt(const PathGuide* guide, const Vec3& p, const Vec3& n, const Bsdf& bsdf, bool training) {
     const uint8_t lobes = bsdf.lobes();
     if (!guide || !(lobes & kLobeNonSpecular) || (lobes & kLobeTransmission)) return {};
     const uint32_t region = guide->regionAt(p, n);
-    if (!guide->trained(region)) return {guide, region};
-    return {guide, region, share, share * (1.0f - bsdf.deltaShare())};
+    const float share = training ? (guide->trained(region) ? kTrainingShare : 0.0f) : guide->share(region);
+    if (share == 0.0f) return {guide, region};
+    return {guide, region, share, 1.0f - bsdf.deltaShare()};
 }
 
 // The density of the world direction wi, given the BSDF's own (non-delta) density.
 inline float scatterPdf(float bsdfPdf, const Vec3& wi, const ScatterGuide& g) {
     if (g.share == 0.0f) return bsdfPdf;
-    return (1.0f - g.share) * bsdfPdf + g.guided * g.guide->pdf(g.region, wi);
+    return ScatterParts{bsdfPdf, g.nonDelta * g.guide->pdf(g.region, wi)}.mixed(g.share);
 }
 
 // Samples the next direction (out.wi local, wi in world space); out.weight is f |cos| over the
-// density, out.pdf that density. Guided, the lobe value first decides, as the BSDF would, whether
+// density, out.pdf that density, and `parts` its two strategies' parts where guided (training
+// learns the share from them). Guided, the lobe value first decides, as the BSDF would, whether
 // a delta lobe is taken; if not, u.guide picks the guide (share) or the BSDF's non-delta lobes,
 // and the density is both strategies' together (one-sample MIS).
-inline bool sampleScatter(const ShadingPoint& s, const VertexDraws& u, const ScatterGuide& g, BsdfSample& out, Vec3& wi) {
+inline bool sampleScatter(const ShadingPoint& s, const VertexDraws& u, const ScatterGuide& g, BsdfSample& out, Vec3& wi,
+                          ScatterParts& parts) {
     if (g.share == 0.0f || u.guide >= g.share || s.bsdf.picksDelta(u.lobe)) {
         if (!s.bsdf.sample(s.wo, u.lobe, u.direction, out)) return false;
         wi = s.frame.toWorld(out.wi);
         if (g.share == 0.0f || out.isDelta()) return true;
         const Spectrum fCos = out.weight * out.pdf;
-        out.pdf = scatterPdf(out.pdf, wi, g);
+        parts = {out.pdf, g.nonDelta * g.guide->pdf(g.region, wi)};
+        out.pdf = parts.mixed(g.share);
         out.weight = fCos / out.pdf;
         return true;
     }
@@ -58,7 +70,8 @@ inline bool sampleScatter(const ShadingPoint& s, const VertexDraws& u, const Sca
     out.wi = s.frame.toLocal(wi);
     float bsdfPdf;
     const Spectrum fCos = s.bsdf.evalPdf(s.wo, out.wi, bsdfPdf);
-    out.pdf = (1.0f - g.share) * bsdfPdf + g.guided * guidePdf;
+    parts = {bsdfPdf, g.nonDelta * guidePdf};
+    out.pdf = parts.mixed(g.share);
     if (!(out.pdf > 0.0f) || isBlack(fCos)) return false;
     out.weight = fCos / out.pdf;
     out.lobe = s.bsdf.lobes() & (kLobeReflection | kLobeNonSpecular);
