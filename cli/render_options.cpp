@@ -84,9 +84,10 @@ options (default in brackets):
   --guide                path guiding: first learn where light comes from at each region of
                          the scene (training passes of 1, 2, 4, ... samples per pixel of the
                          whole image, not kept; within a quarter of --time; at most 256 MiB),
-                         then draw half of each diffuse or glossy bounce's directions from
-                         what was learnt: for indirect light that next-event estimation cannot
-                         aim at, such as a room lit by a bright patch of ceiling [off]
+                         then draw a share of each diffuse or glossy bounce's directions
+                         from what was learnt, the share each region measured to pay (none
+                         where it does not): for indirect light that next-event estimation
+                         cannot aim at, such as a room lit by a bright patch of ceiling [off]
   --guide-spp N          with --guide, samples per pixel spent learning, in [1, 1023]
                          [the largest 2^k - 1 up to a quarter of -spp, at most 63]
   --denoise              denoise the image with Intel Open Image Denoise (its RT filter on
