@@ -259,15 +259,16 @@ int renderCommand(int argc, char** argv) {
                     " pixels converged";
     if (result.outOfTime) stopNote += ", stopped by --time";
     if (args.settings.guideSpp > 0) {
-        char guideText[120];
-        std::snprintf(guideText, sizeof guideText, ", guided (learnt from %u spp, %.1f MiB)", result.guideSpp,
+        char guideText[160];
+        std::snprintf(guideText, sizeof guideText, ", guided (learnt from %u spp%s, guiding %.0f %% of bounces, %.1f MiB)",
+                      result.guideSpp, result.guideSettled ? ", stopped there" : "", 100.0 * result.guidedFraction,
                       double(result.guideBytes) / (1 << 20));
         stopNote += guideText;
         if (!args.quiet && result.guideLimited)
             std::fprintf(err, "pt: warning: the path guide reached its memory bound (%.0f MiB): its regions stopped "
                               "splitting, so it is coarser than its samples would allow\n",
                          double(result.guideBytes) / (1 << 20));
-        if (!args.quiet && args.guideSppGiven && result.guideSpp < args.settings.guideSpp)
+        if (!args.quiet && args.guideSppGiven && result.guideSpp < args.settings.guideSpp && !result.guideSettled)
             std::fprintf(err, "pt: warning: --guide learnt from %u of its %u spp before a quarter of --time was spent\n",
                          result.guideSpp, args.settings.guideSpp);
     }

@@ -70,9 +70,10 @@ void addRunMetadata(Image& image, const RenderArgs& args, const RenderResult& re
         image.metadata.push_back(ImageAttribute::floatValue("pt:time", args.budget.seconds));
         integer("pt:outOfTime", result.outOfTime ? 1 : 0);
     }
-    if (args.settings.guideSpp > 0) { // what the guide learnt from (fewer under --time) and its size
+    if (args.settings.guideSpp > 0) { // what the guide learnt from (fewer under --time), its size, what it guides
         integer("pt:guideTrained", result.guideSpp);
         integer("pt:guideBytes", (long long)result.guideBytes);
+        image.metadata.push_back(ImageAttribute::floatValue("pt:guidedFraction", float(result.guidedFraction)));
     }
     integer("pt:threadsRequested", args.threads);
     integer("pt:threads", threads);

@@ -196,6 +196,36 @@ TEST(PathGuide, RegionsLearnTheShareThatSamplesTheirLightBest) {
     EXPECT_EQ(learntShare(0.5f, 1.0), 0.5f) << "the integrand is the training mixture: its share samples it exactly";
 }
 
+// The same through a guide's pass: the region that measured guiding not to pay is not guided,
+// and guidedFraction (what stops training early) counts the samples of guided regions.
+TEST(PathGuide, ARegionWhereGuidingDoesNotPayIsNotGuided) {
+    for (float integrandGuide : {0.0f, 1.0f}) {
+        PathGuide guide = learntGuide(1);
+        const uint32_t region = guide.regionAt(Vec3(0.1f), Vec3(0, 0, 1));
+        ASSERT_EQ(guide.share(region), kTrainingShare) << "a region keeps the training share until it has measured one";
+        uint64_t state = 99;
+        auto next = [&] {
+            state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+            return float((state >> 40) * 0x1p-24);
+        };
+        GuideRecorder tile;
+        for (int i = 0; i < 20000; ++i) {
+            const float u = next();
+            const float t = std::max(next() < kTrainingShare ? std::pow(u, 0.2f) : u, 1e-4f);
+            const float guidePdf = 5.0f * std::pow(t, 4.0f);
+            const float pdf = (1.0f - kTrainingShare) + kTrainingShare * guidePdf;
+            const float g = integrandGuide > 0.0f ? guidePdf : 1.0f;
+            tile.record(guide.recordKey(region, directionOfSquare(Vec2(next(), next()))), 1.0f);
+            tile.recordShare(region, g / pdf, pdf, 1.0f, guidePdf);
+        }
+        tile.reduce();
+        guide.add(tile);
+        guide.endPass(1u << 30);
+        EXPECT_EQ(guide.share(region), integrandGuide > 0.0f ? 0.9f : 0.0f);
+        EXPECT_EQ(guide.guidedFraction(), integrandGuide > 0.0f ? 1.0 : 0.0);
+    }
+}
+
 // The lab's closed furnace: guided or not, the estimate is Le / (1 - a).
 TEST(PathGuide, GuidedFurnaceConvergesToTheSeries) {
     Scene scene = emptyScene(lookAt({0.1f, 0.05f, 0}, {0.1f, 0.05f, -1}, {0, 1, 0}, 90));

@@ -134,6 +134,7 @@ void PathGuide::add(const GuideRecorder& tile) {
 }
 
 void PathGuide::endPass(uint64_t samplesToSplit) {
+    uint64_t samples = 0, guidedSamples = 0;
     for (Region& r : regions_) {
         if (r.moments.count >= kShareSamples) r.share = r.moments.best(kGuidedCost);
         r.moments = ShareMoments{};
@@ -141,7 +142,10 @@ void PathGuide::endPass(uint64_t samplesToSplit) {
         // A region that learnt nothing this pass keeps what it knew.
         if (r.learning.energy() > 0.0f) r.learnt = std::move(r.learning);
         r.learning = r.learnt.refined(kSplitShare);
+        samples += r.samples;
+        if (r.share > 0.0f && r.learnt.energy() > 0.0f) guidedSamples += r.samples;
     }
+    guidedFraction_ = samples > 0 ? double(guidedSamples) / double(samples) : 0.0;
     // Past the bound, regions stop splitting and the trees coarsen (a quadrant must hold twice
     // the share to be split, again until they fit), keeping the energy they learnt.
     for (float share = 2.0f * kSplitShare; bytes() > maxBytes_ && share <= 1.0f; share *= 2.0f) {

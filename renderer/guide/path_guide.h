@@ -101,6 +101,10 @@ public:
     // `samplesToSplit`: a region that received more samples in this pass is split in two.
     void endPass(uint64_t samplesToSplit);
 
+    // Of the guidable vertices the last pass recorded, the fraction in regions that will be
+    // guided now (share > 0).
+    double guidedFraction() const { return guidedFraction_; }
+
     size_t regionCount() const { return regions_.size(); }
     size_t directionalNodes() const;
     // The memory the guide takes, and whether it reached its bound (regions stopped splitting).
@@ -130,6 +134,7 @@ private:
     float size_;
     size_t maxBytes_;
     bool limited_ = false;
+    double guidedFraction_ = 1.0;
     std::vector<Node> nodes_;
     std::vector<Region> regions_;
 };

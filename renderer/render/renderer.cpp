@@ -32,6 +32,10 @@ constexpr size_t kBatchPaths = 512;
 // (Müller et al.'s c). Finer regions learn from fewer samples each: at 4000 the guide of
 // cornellbottle2's walls was noisier, and no better at equal samples.
 constexpr double kGuideSplitSamples = 12000.0;
+// Training stops once it has taken at least kGuideMinTrainingSpp and fewer than kGuideStopBelow
+// of the guidable vertices of its last pass fall in regions that learnt to be guided.
+constexpr uint32_t kGuideMinTrainingSpp = 7;
+constexpr double kGuideStopBelow = 0.05;
 
 // One pixel's sums over the samples of a pass, in double so that long renders do not lose the
 // small values to the large.
@@ -104,6 +108,13 @@ RayCounts Renderer::trainGuide(RenderProgress* progress, double seconds) {
         // c sqrt(2^k), with c for pt's smaller images).
         guide_->endPass(uint64_t(kGuideSplitSamples * std::sqrt(double(size))));
         guideSppTrained_ = first + size;
+        // Training that its own measure says guides almost nothing is stopped: more of it would
+        // be samples not kept, for a guide the render would hardly use.
+        if (first + 3 * size <= settings_.guideSpp && guideSppTrained_ >= kGuideMinTrainingSpp &&
+            guide_->guidedFraction() < kGuideStopBelow) {
+            guideSettled_ = true;
+            break;
+        }
     }
     return rays;
 }
@@ -274,6 +285,8 @@ RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& c
             result.guideSpp = renderer.guideSppTrained();
             result.guideBytes = guide->bytes();
             result.guideLimited = guide->limited();
+            result.guideSettled = renderer.guideSettled();
+            result.guidedFraction = guide->guidedFraction();
         }
         double secondsPerPixelSample = 0.0; // of the last pass, for the time budget
         for (uint32_t first = begin; first < end;) {

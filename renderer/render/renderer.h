@@ -58,6 +58,9 @@ public:
     // before a pass that would take it past `seconds` (0: no limit; a --time render's share).
     RayCounts trainGuide(RenderProgress* progress = nullptr, double seconds = 0.0);
     uint32_t guideSppTrained() const { return guideSppTrained_; }
+    // Whether training stopped before settings.guideSpp because the guide had learnt to guide
+    // almost none of the bounces (PathGuide::guidedFraction).
+    bool guideSettled() const { return guideSettled_; }
     const PathGuide* guide() const { return guide_.get(); }
 
     size_t tileCount() const { return tilesIn(window_); }
@@ -87,6 +90,7 @@ private:
     PathTracer tracer_;
     std::unique_ptr<PathGuide> guide_; // --guide
     uint32_t guideSppTrained_ = 0;
+    bool guideSettled_ = false;
     int width_, height_;
     PixelWindow window_;
 };
@@ -102,6 +106,9 @@ struct RenderResult {
     uint32_t guideSpp = 0;
     size_t guideBytes = 0;
     bool guideLimited = false;
+    // --guide: training stopped early, the guide guiding this fraction of the bounces.
+    bool guideSettled = false;
+    double guidedFraction = 0.0;
 };
 
 // What share of a job to render: samples [first, last) (last 0: all spp) of the pixels in
