@@ -83,7 +83,8 @@ options (default in brackets):
   --sky-scale S          multiply the sky's, sun's and ground's radiance by S [1]
   --guide                path guiding: first learn where light comes from at each region of
                          the scene (training passes of 1, 2, 4, ... samples per pixel of the
-                         whole image, not kept; within a quarter of --time; at most 256 MiB),
+                         whole image, not kept; within a quarter of --time; stopped after 7
+                         spp where guiding does not pay; at most 256 MiB),
                          then draw a share of each diffuse or glossy bounce's directions
                          from what was learnt, the share each region measured to pay (none
                          where it does not): for indirect light that next-event estimation
