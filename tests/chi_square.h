@@ -15,6 +15,15 @@
 
 namespace pt::test {
 
+// A small reproducible stream of uniform floats in [0, 1) for tests: a 64-bit LCG's high bits.
+struct TestStream {
+    uint64_t state;
+    float next() {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return float((state >> 40) * 0x1p-24);
+    }
+};
+
 // P(X > x) for X ~ chi-square with k degrees of freedom (regularized upper gamma Q(k/2, x/2)).
 inline double chiSquareSurvival(double x, double k) {
     double a = 0.5 * k, z = 0.5 * x;
@@ -101,12 +110,8 @@ inline ChiSquareResult chiSquareDirections(const std::function<bool(Vec2, Vec3&)
                                            uint64_t seed = 1) {
     const int bins = thetaBins * phiBins;
     std::vector<double> observed(bins + 1, 0.0), expected(bins + 1, 0.0);
-    // Samples: a simple LCG-free stream from std::hash mixing; quality is ample for this.
-    uint64_t state = seed * 0x9E3779B97F4A7C15ULL + 1;
-    auto next = [&] {
-        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-        return float((state >> 40) * 0x1p-24);
-    };
+    TestStream stream{seed * 0x9E3779B97F4A7C15ULL + 1};
+    auto next = [&] { return stream.next(); };
     auto binOf = [&](const Vec3& d) {
         double z = std::clamp(double(d.z), -1.0, 1.0);
         double phi = std::atan2(double(d.y), double(d.x));
@@ -210,11 +215,8 @@ inline ChiSquareResult chiSquareHalfVectors(const std::function<bool(float, Vec2
         uneven = hi > 3.0 * lo;
         return sum;
     };
-    uint64_t state = seed * 0x9E3779B97F4A7C15ULL + 1;
-    auto next = [&] {
-        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-        return float((state >> 40) * 0x1p-24);
-    };
+    TestStream stream{seed * 0x9E3779B97F4A7C15ULL + 1};
+    auto next = [&] { return stream.next(); };
     for (int k = 0; k < samples; ++k) {
         int side = 0;
         Vec3 m;

@@ -30,11 +30,8 @@ TEST(PathGuide, SquareAndSphereMapBothWays) {
 // a broad dim one, and a weak spread over all directions.
 PathGuide learntGuide(int passes) {
     PathGuide guide(Vec3(-1.0f), Vec3(1.0f));
-    uint64_t state = 12345;
-    auto next = [&] {
-        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-        return float((state >> 40) * 0x1p-24);
-    };
+    TestStream stream{12345};
+    auto next = [&] { return stream.next(); };
     for (int pass = 0; pass < passes; ++pass) {
         GuideRecorder tile;
         for (int i = 0; i < 20000; ++i) {
@@ -71,11 +68,8 @@ TEST(PathGuide, SamplesTheDensityItReports) {
             expected[size_t(i * ny + j)] = m * samples;
             total += m;
         }
-    uint64_t state = 7;
-    auto next = [&] {
-        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-        return float((state >> 40) * 0x1p-24);
-    };
+    TestStream stream{7};
+    auto next = [&] { return stream.next(); };
     int mismatched = 0;
     for (int k = 0; k < samples; ++k) {
         float pdf;
@@ -163,26 +157,27 @@ TEST(PathGuide, StopsSplittingAtItsMemoryBound) {
     EXPECT_GT(free.bytes(), size_t(64) << 10);
 }
 
-// The share a region learns (ShareMoments::best) from guided samples drawn at the training share,
-// in one dimension: the BSDF draws t uniformly on [0, 1], the guide with density 5 t^4. Where the
-// integrand is the guide's shape, the largest share wins, unless a guided vertex costs too much;
-// where it is the BSDF's, no share does; where it is half of each, the
-// half share, whose density is the integrand.
-float learntShare(float integrandGuide, double guidedCost) {
-    uint64_t state = 777;
-    auto next = [&] {
-        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-        return float((state >> 40) * 0x1p-24);
-    };
-    GuideRecorder tile;
+// Guided samples of a one-dimensional integrand at `region`, drawn at the training share: the
+// BSDF draws t uniformly on [0, 1], the guide with density 5 t^4, and the integrand is
+// `integrandGuide` of the guide's shape plus the rest of the BSDF's.
+void recordShares(GuideRecorder& tile, uint32_t region, float integrandGuide, uint64_t seed) {
+    TestStream stream{seed};
     for (int i = 0; i < 20000; ++i) {
-        const float u = next();
-        const float t = std::max(next() < kTrainingShare ? std::pow(u, 0.2f) : u, 1e-4f);
+        const float u = stream.next();
+        const float t = std::max(stream.next() < kTrainingShare ? std::pow(u, 0.2f) : u, 1e-4f);
         const float bsdfPdf = 1.0f, guidePdf = 5.0f * std::pow(t, 4.0f);
         const float pdf = (1.0f - kTrainingShare) * bsdfPdf + kTrainingShare * guidePdf;
         const float g = integrandGuide * guidePdf + (1.0f - integrandGuide) * bsdfPdf;
-        tile.recordShare(0, g / pdf, pdf, bsdfPdf, guidePdf);
+        tile.recordShare(region, g / pdf, pdf, bsdfPdf, guidePdf);
     }
+}
+
+// The share a region learns (ShareMoments::best) from those samples. Where the integrand is the
+// guide's shape, the largest share wins, unless a guided vertex costs too much; where it is the
+// BSDF's, no share does; where it is half of each, the half share, whose density is the integrand.
+float learntShare(float integrandGuide, double guidedCost) {
+    GuideRecorder tile;
+    recordShares(tile, 0, integrandGuide, 777);
     tile.reduce();
     EXPECT_EQ(tile.shareSums().size(), 1u);
     EXPECT_EQ(tile.shareSums()[0].second.count, 20000.0);
@@ -203,21 +198,11 @@ TEST(PathGuide, ARegionWhereGuidingDoesNotPayIsNotGuided) {
         PathGuide guide = learntGuide(1);
         const uint32_t region = guide.regionAt(Vec3(0.1f), Vec3(0, 0, 1));
         ASSERT_EQ(guide.share(region), kTrainingShare) << "a region keeps the training share until it has measured one";
-        uint64_t state = 99;
-        auto next = [&] {
-            state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-            return float((state >> 40) * 0x1p-24);
-        };
         GuideRecorder tile;
-        for (int i = 0; i < 20000; ++i) {
-            const float u = next();
-            const float t = std::max(next() < kTrainingShare ? std::pow(u, 0.2f) : u, 1e-4f);
-            const float guidePdf = 5.0f * std::pow(t, 4.0f);
-            const float pdf = (1.0f - kTrainingShare) + kTrainingShare * guidePdf;
-            const float g = integrandGuide > 0.0f ? guidePdf : 1.0f;
-            tile.record(guide.recordKey(region, directionOfSquare(Vec2(next(), next()))), 1.0f);
-            tile.recordShare(region, g / pdf, pdf, 1.0f, guidePdf);
-        }
+        TestStream directions{99};
+        for (int i = 0; i < 20000; ++i)
+            tile.record(guide.recordKey(region, directionOfSquare(Vec2(directions.next(), directions.next()))), 1.0f);
+        recordShares(tile, region, integrandGuide, 99);
         tile.reduce();
         guide.add(tile);
         guide.endPass(1u << 30);
