@@ -150,9 +150,11 @@ TEST(Denoiser, KeepsTheTextureBehindGlass) {
     double raw = displayedMse(noisy.color, reference.color, size, 4, 24);
     double withFeatures = displayedMse(good, reference.color, size, 4, 24);
     double withFirstHit = displayedMse(bad, reference.color, size, 4, 24);
-    // Seeds 1 to 5 gave 0.08 to 0.09 of the raw error, and 0.25 to 0.35 of the first-hit one.
-    EXPECT_LT(withFeatures, 0.15 * raw) << "raw " << raw << ", denoised " << withFeatures;
-    EXPECT_LT(withFeatures, 0.5 * withFirstHit) << "first-hit features " << withFirstHit << ", pt's " << withFeatures;
+    // Seeds 1 to 6 gave 0.11 to 0.14 of the raw error, and 0.38 to 0.52 of the first-hit one
+    // (0.07 to 0.09 and 0.25 to 0.35 before roulette spared paths above a quarter's throughput:
+    // the raw and first-hit errors fell by a third with the noise, the denoised one stayed).
+    EXPECT_LT(withFeatures, 0.2 * raw) << "raw " << raw << ", denoised " << withFeatures;
+    EXPECT_LT(withFeatures, 0.65 * withFirstHit) << "first-hit features " << withFirstHit << ", pt's " << withFeatures;
     // And the filter keeps the image's brightness: its mean within 2 % of the raw render's (which
     // itself is within a few percent of the reference's at 4 spp; seeds 1 to 5: 0.4 to 0.9 % darker).
     double meanGood = 0, meanRaw = 0;

@@ -11,7 +11,8 @@ mean error, since a single render's error is dominated by its few brightest outl
 The error is the relative MSE, mean over pixels and channels of (x - r)^2 / (r^2 + 0.01), against a
 reference rendered by Mitsuba (cached in build-crosscheck/): any disagreement between the
 renderers counts against pt. Mitsuba gets pt's Russian roulette depth (3) unless --rr-depth says
-otherwise.
+otherwise; its survival rule stays its own (the throughput, at most 0.95), where pt keeps a path
+whose throughput is above a quarter.
 
 For unbiased renderers error falls as 1 / time, so error x seconds is one number per renderer:
 its mean over the sample counts from 8 spp on gives the equal-time error ratio, steadier than
