@@ -143,7 +143,7 @@ void PathGuide::endPass(uint64_t samplesToSplit) {
         if (r.learning.energy() > 0.0f) r.learnt = std::move(r.learning);
         r.learning = r.learnt.refined(kSplitShare);
         samples += r.samples;
-        if (r.share > 0.0f && r.learnt.energy() > 0.0f) guidedSamples += r.samples;
+        if (r.guidedShare() > 0.0f) guidedSamples += r.samples;
     }
     guidedFraction_ = samples > 0 ? double(guidedSamples) / double(samples) : 0.0;
     // Past the bound, regions stop splitting and the trees coarsen (a quadrant must hold twice

@@ -83,7 +83,7 @@ public:
     bool trained(uint32_t region) const { return regions_[region].learnt.energy() > 0.0f; }
     // The guide's share of a draw at the region (0: not guided there): learnt in training, from
     // how well each of kGuideShares would have sampled the region's light, against its cost.
-    float share(uint32_t region) const { return trained(region) ? regions_[region].share : 0.0f; }
+    float share(uint32_t region) const { return regions_[region].guidedShare(); }
     // A world direction drawn from the region's learnt distribution, with its solid-angle density.
     Vec3 sample(uint32_t region, Vec2 u, float& pdf) const;
     float pdf(uint32_t region, const Vec3& dir) const;
@@ -127,6 +127,8 @@ private:
         uint64_t samples = 0;          // received this pass
         float share = kTrainingShare;  // the guide's share of a draw here
         ShareMoments moments;          // this pass's measure of the shares
+        // The share a draw takes here: none until the region has learnt something to sample.
+        float guidedShare() const { return learnt.energy() > 0.0f ? share : 0.0f; }
     };
     void split(uint32_t node, int depth, uint64_t samples, uint64_t samplesToSplit, size_t& bytes);
 
