@@ -194,6 +194,12 @@ void PathGuide::split(uint32_t node, int depth, uint64_t samples, uint64_t sampl
     split(child + 1, depth + 1, samples / 2, samplesToSplit, bytes);
 }
 
+bool PathGuide::guidesAnywhere() const {
+    for (const Region& r : regions_)
+        if (r.guidedShare() > 0.0f) return true;
+    return false;
+}
+
 size_t PathGuide::bytes() const {
     size_t quadtreeNodes = 0;
     for (const Region& r : regions_) quadtreeNodes += r.learnt.nodeCount() + r.learning.nodeCount();

@@ -104,6 +104,8 @@ public:
     // Of the guidable vertices the last pass recorded, the fraction in regions that will be
     // guided now (share > 0).
     double guidedFraction() const { return guidedFraction_; }
+    // Whether any region will be guided (share > 0).
+    bool guidesAnywhere() const;
 
     size_t regionCount() const { return regions_.size(); }
     size_t directionalNodes() const;

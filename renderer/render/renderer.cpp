@@ -116,6 +116,9 @@ RayCounts Renderer::trainGuide(RenderProgress* progress, double seconds) {
             break;
         }
     }
+    // A guide that guides no region would only cost its lookups at every bounce: the render's
+    // samples are then drawn as unguided ones are.
+    if (!guide_->guidesAnywhere()) tracer_.setGuide(nullptr);
     return rays;
 }
 
