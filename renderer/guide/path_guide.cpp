@@ -12,7 +12,7 @@ constexpr float kSplitShare = 0.01f;
 // The spatial tree's deepest level: 2^-8 of the scene along each axis.
 constexpr int kMaxSpatialDepth = 24;
 // A region chooses its share from at least this many guided samples; with fewer it keeps the
-// share it had.
+// share it had, none at first: a guide learnt from one or two passes is not trusted unmeasured.
 constexpr double kShareSamples = 256.0;
 // What a guided vertex costs against an unguided one (the guide's density looked up for the
 // sampled direction and the light sample's, and a draw from it): a share must cut the variance

@@ -127,7 +127,7 @@ private:
     struct Region {
         DirectionalQuadtree learnt, learning;
         uint64_t samples = 0;          // received this pass
-        float share = kTrainingShare;  // the guide's share of a draw here
+        float share = 0.0f;            // the guide's share of a draw here: none until measured
         ShareMoments moments;          // this pass's measure of the shares
         // The share a draw takes here: none until the region has learnt something to sample.
         float guidedShare() const { return learnt.energy() > 0.0f ? share : 0.0f; }
