@@ -83,8 +83,9 @@ options (default in brackets):
   --sky-scale S          multiply the sky's, sun's and ground's radiance by S [1]
   --guide                path guiding: first learn where light comes from at each region of
                          the scene (training passes of 1, 2, 4, ... samples per pixel of the
-                         whole image, not kept; within a quarter of --time; stopped after 7
-                         spp where guiding does not pay; at most 256 MiB),
+                         whole image, kept as the image's first samples; within a quarter
+                         of --time; stopped after 7 spp where guiding does not pay; at most
+                         256 MiB),
                          then draw a share of each diffuse or glossy bounce's directions
                          from what was learnt, the share each region measured to pay (none
                          where it does not): for indirect light that next-event estimation
@@ -326,7 +327,8 @@ RenderArgs parseRenderArgs(int argc, char** argv) {
                          "split an adaptive render with --crop (each crop adaptive over its own pixels)");
     if (r.guideSppGiven && !r.guide) throw UsageError("--guide-spp needs --guide");
     if (r.guide && !r.guideSppGiven) {
-        // Training samples are spent before the render and not kept: a quarter of -spp at most.
+        // Training passes draw half their directions from a guide still learning (dearer, and
+        // noisier where guiding does not pay): a quarter of -spp at most.
         uint32_t budget = uint32_t(std::min<long long>(63, std::max<long long>(1, r.spp / 4)));
         r.settings.guideSpp = 1;
         while (2 * r.settings.guideSpp + 1 <= budget) r.settings.guideSpp = 2 * r.settings.guideSpp + 1;

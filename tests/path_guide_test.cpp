@@ -229,7 +229,7 @@ TEST(PathGuide, GuidedFurnaceConvergesToTheSeries) {
 
 // The lab's room with a glass and a metal ball under a small lamp (scenes/glass.obj): the glass
 // throws a caustic that next-event estimation cannot sample. Guided and unguided renders agree,
-// and learning gives the same image on 1 and 2 threads.
+// learning gives the same image on 1 and 2 threads, and training's samples are kept.
 TEST(PathGuide, CausticSceneAgreesAndIsDeterministic) {
     Warnings w;
     Scene scene = loadScene(PT_SOURCE_DIR "/scenes/glass.obj", w);
@@ -240,6 +240,13 @@ TEST(PathGuide, CausticSceneAgreesAndIsDeterministic) {
     ASSERT_EQ(one.mean, two.mean) << "the learnt guide depends on the thread count";
     Rendered reference = render(scene, 32, 24, 1024);
     expectSameImage(render(scene, 32, 24, 256, guided), reference, "guided glass");
+    // Training's passes are the image's first samples, not extra ones: 16 spp trace 16 camera
+    // rays a pixel, and an image of training alone (drawn at the training share wherever a region
+    // has learnt, each pass by the guide of the passes before) agrees with the reference.
+    EXPECT_EQ(one.rays.camera, 16u * 32u * 24u);
+    Rendered training = render(scene, 32, 24, 7, guided);
+    EXPECT_EQ(training.rays.camera, 7u * 32u * 24u);
+    expectSameImage(training, reference, "glass, training passes only");
 }
 
 } // namespace

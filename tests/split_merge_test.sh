@@ -89,9 +89,10 @@ else
   echo "FAIL first pass interrupted: exit status $status, partial $(ls early.partial.exr 2>&1), pt:spp $(meta early.partial.exr pt:spp 2>&1)"; fail=1
 fi
 
-# Path guiding (issue 38): every part learns the same guide, from the whole image under a seed of
-# its own, before it renders its share; so guided parts merge exactly, on any thread count, and
-# a guided render stopped and resumed equals the one never stopped.
+# Path guiding (issue 38): every part learns the same guide from the whole image's first samples,
+# keeping those of its own share, before it renders the rest of its share; so guided parts merge
+# exactly, on any thread count (samples 0:5 are training's, 5:16 both training's and the
+# render's), and a guided render stopped and resumed equals the one never stopped.
 gscene=$root/scenes/glass.obj
 guided=(-spp 16 --res 48x36 --aov variance -q --guide --guide-spp 7)
 run "$pt" render "$gscene" "${guided[@]}" -o gsingle.exr

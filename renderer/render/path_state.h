@@ -66,6 +66,7 @@ struct PathState {
     int depth = 0;            // scattering events so far
     uint32_t medium = kAir;   // material whose volume the ray travels in (medium.h)
     bool deltaBefore = true;  // camera or delta lobe before this hit: emitters seen count fully
+    bool kept = true;         // whether the image keeps the path's light (a training pass keeps only some)
     uint32_t pixel = 0;       // the caller's index of the pixel the path belongs to
     FirstHit first;
     GuidePath* guide = nullptr; // a training pass's record of the path, or none

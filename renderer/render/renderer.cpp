@@ -42,9 +42,10 @@ constexpr double kGuideStopBelow = 0.05;
 struct PixelSums {
     glm::dvec3 sum{0.0}, sumSq{0.0}, albedo{0.0}, normal{0.0};
     double depth = 0.0;
-    uint32_t hits = 0;
+    uint32_t hits = 0, count = 0;
 
     void add(const Spectrum& radiance, const FirstHit& first) {
+        ++count;
         glm::dvec3 L(radiance);
         sum += L;
         sumSq += L * L;
@@ -68,18 +69,16 @@ Renderer::Renderer(const Scene& scene, const Accel& accel, const Camera& camera,
 
 RayCounts Renderer::renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress,
                                   const std::vector<uint32_t>* startAt) const {
-    return renderPass(&film, first, last, progress, startAt, settings_.seed, window_, nullptr);
+    return renderPass(&film, Pass{first, last, settings_.seed, 0, window_, first, last, nullptr}, progress, startAt);
 }
 
-RayCounts Renderer::renderPass(Film* film, uint32_t first, uint32_t last, RenderProgress* progress,
-                               const std::vector<uint32_t>* startAt, uint64_t seed, const PixelWindow& window,
-                               std::vector<GuideRecorder>* recorders) const {
-    if (settings_.sampler == SamplerKind::Sobol)
-        return renderSamplesWith<SobolSampler>(film, first, last, progress, startAt, seed, window, recorders);
-    return renderSamplesWith<IndependentSampler>(film, first, last, progress, startAt, seed, window, recorders);
+RayCounts Renderer::renderPass(Film* film, const Pass& pass, RenderProgress* progress, const std::vector<uint32_t>* startAt) const {
+    if (settings_.sampler == SamplerKind::Sobol) return renderSamplesWith<SobolSampler>(film, pass, progress, startAt);
+    return renderSamplesWith<IndependentSampler>(film, pass, progress, startAt);
 }
 
-RayCounts Renderer::trainGuide(RenderProgress* progress, double seconds) {
+RayCounts Renderer::trainGuide(Film* film, uint32_t keepFirst, uint32_t keepLast, const std::vector<uint32_t>* startAt,
+                               RenderProgress* progress, double seconds) {
     RayCounts rays;
     if (settings_.guideSpp == 0) return rays;
     Vec3 lo, hi;
@@ -88,18 +87,21 @@ RayCounts Renderer::trainGuide(RenderProgress* progress, double seconds) {
     tracer_.setGuide(guide_.get());
     const PixelWindow full{0, 0, width_, height_};
     std::vector<GuideRecorder> recorders(tilesIn(full));
-    // Samples of their own: the render's samples stay independent of the guide they are drawn by.
-    const uint64_t seed = hashCombine(settings_.seed, 0x6775696465ULL);
     const auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     uint32_t first = 0;
     double lastPass = 0.0;
-    for (uint32_t size = 1; first + size <= settings_.guideSpp; first += size, size *= 2) {
+    for (uint32_t size = 1, k = 0; first + size <= settings_.guideSpp; first += size, size *= 2, ++k) {
         if (progress && progress->cancel.load()) break;
         if (seconds > 0.0 && elapsed() + 2.0 * lastPass > seconds) break; // the next pass is twice the last
         const double passStart = elapsed();
-        rays += renderPass(nullptr, first, first + size, nullptr, nullptr, seed, full, &recorders);
+        // A seed per pass: the guide a pass draws by was learnt from the passes before, whose
+        // samples a shared seed would correlate with this one's (Sobol's are stratified together).
+        // Each pass's samples are the first indices of its sequence.
+        const uint64_t seed = hashCombine(settings_.seed, 0x6775696465ULL + k);
+        rays += renderPass(film, Pass{first, first + size, seed, first, full, keepFirst, keepLast, &recorders}, progress, startAt);
         lastPass = elapsed() - passStart;
+        if (progress && progress->cancel.load()) break; // a pass cut short: some tiles recorded nothing
         for (GuideRecorder& r : recorders) { // in tile order: the same tree on every run
             guide_->add(r);
             r.clear();
@@ -108,8 +110,8 @@ RayCounts Renderer::trainGuide(RenderProgress* progress, double seconds) {
         // c sqrt(2^k), with c for pt's smaller images).
         guide_->endPass(uint64_t(kGuideSplitSamples * std::sqrt(double(size))));
         guideSppTrained_ = first + size;
-        // Training that its own measure says guides almost nothing is stopped: more of it would
-        // be samples not kept, for a guide the render would hardly use.
+        // Training that its own measure says guides almost nothing is stopped: the rest of the
+        // render's samples are cheaper unguided.
         if (first + 3 * size <= settings_.guideSpp && guideSppTrained_ >= kGuideMinTrainingSpp &&
             guide_->guidedFraction() < kGuideStopBelow) {
             guideSettled_ = true;
@@ -123,9 +125,11 @@ RayCounts Renderer::trainGuide(RenderProgress* progress, double seconds) {
 }
 
 template <typename Sampler>
-RayCounts Renderer::renderSamplesWith(Film* film, uint32_t first, uint32_t last, RenderProgress* progress,
-                                      const std::vector<uint32_t>* startAt, uint64_t seed, const PixelWindow& window,
-                                      std::vector<GuideRecorder>* recorders) const {
+RayCounts Renderer::renderSamplesWith(Film* film, const Pass& pass, RenderProgress* progress,
+                                      const std::vector<uint32_t>* startAt) const {
+    const uint32_t first = pass.first, last = pass.last;
+    const PixelWindow& window = pass.window;
+    std::vector<GuideRecorder>* recorders = pass.recorders;
     tbb::combinable<RayCounts> counts;
     tbb::enumerable_thread_specific<PathBatch<Sampler>> batches;
     const bool layers = film && film->hasFirstHitLayers();
@@ -145,18 +149,21 @@ RayCounts Renderer::renderSamplesWith(Film* film, uint32_t first, uint32_t last,
                 const int x1 = std::min(x0 + kTileSize, window.x1), y1 = std::min(y0 + kTileSize, window.y1);
                 const int tileWidth = x1 - x0;
                 // The sampler keys a pixel by its place in the full image, the film by its place in the window.
+                auto inFilm = [&](int x, int y) { return x >= window_.x0 && x < window_.x1 && y >= window_.y0 && y < window_.y1; };
                 auto filmPixel = [&](int x, int y) {
-                    return size_t(y - window.y0) * size_t(window.width()) + size_t(x - window.x0);
+                    return size_t(y - window_.y0) * size_t(window_.width()) + size_t(x - window_.x0);
                 };
                 PixelSums sums[kTileSize * kTileSize];
                 PixelKey keys[kTileSize * kTileSize];
-                uint32_t begin[kTileSize * kTileSize], tileBegin = last;
+                // Samples [begin, last) of a pixel are traced; those from keepFrom to keepLast kept.
+                uint32_t begin[kTileSize * kTileSize], keepFrom[kTileSize * kTileSize], tileBegin = last;
                 for (int y = y0; y < y1; ++y)
                     for (int x = x0; x < x1; ++x) {
                         const int k = (y - y0) * tileWidth + (x - x0);
-                        begin[k] = startAt ? std::max(first, (*startAt)[filmPixel(x, y)]) : first;
+                        keepFrom[k] = !inFilm(x, y) ? ~0u : startAt ? std::max(pass.keepFirst, (*startAt)[filmPixel(x, y)]) : pass.keepFirst;
+                        begin[k] = recorders ? first : std::max(first, keepFrom[k]); // training learns from every sample
                         tileBegin = std::min(tileBegin, begin[k]);
-                        keys[k] = Sampler::pixelKey(uint32_t(y) * uint32_t(width_) + uint32_t(x), seed);
+                        keys[k] = Sampler::pixelKey(uint32_t(y) * uint32_t(width_) + uint32_t(x), pass.seed);
                     }
                 // Paths go into the batch sample by sample, each sample's pixels row by row in
                 // groups of kPacket, whose camera rays are traced as one packet. Results are summed
@@ -165,7 +172,8 @@ RayCounts Renderer::renderSamplesWith(Film* film, uint32_t first, uint32_t last,
                 GuideRecorder* recorder = recorders ? &(*recorders)[tile] : nullptr;
                 auto traceBatch = [&] {
                     tracer_.trace(batch, layers, local, recorder);
-                    for (const PathState<Sampler>& p : batch.paths) sums[p.pixel].add(p.L, p.first);
+                    for (const PathState<Sampler>& p : batch.paths)
+                        if (p.kept) sums[p.pixel].add(p.L, p.first);
                     batch.clear();
                 };
                 for (uint32_t s = tileBegin; s < last; ++s)
@@ -183,8 +191,9 @@ RayCounts Renderer::renderSamplesWith(Film* film, uint32_t first, uint32_t last,
                                 active[i] = true;
                                 lane[count++] = i;
                                 PathState<Sampler>& p = batch.paths.emplace_back();
-                                p.sampler = Sampler(keys[k], s);
+                                p.sampler = Sampler(keys[k], s - pass.indexBase);
                                 p.pixel = uint32_t(k);
+                                p.kept = s >= keepFrom[k] && s < pass.keepLast;
                             }
                             if (count == 0) continue;
                             // The position inside the pixel (a box filter: uniform there), for the
@@ -209,13 +218,13 @@ RayCounts Renderer::renderSamplesWith(Film* film, uint32_t first, uint32_t last,
                     for (int y = y0; y < y1; ++y)
                         for (int x = x0; x < x1; ++x) {
                             const int k = (y - y0) * tileWidth + (x - x0);
-                            if (begin[k] >= last) continue; // a resumed pixel that already has them all
                             const PixelSums& p = sums[k];
-                            film->add(filmPixel(x, y), p.sum, p.sumSq, last - begin[k]);
+                            if (p.count == 0) continue; // a resumed pixel that already has them all, or none kept
+                            film->add(filmPixel(x, y), p.sum, p.sumSq, p.count);
                             if (layers) film->addFirstHit(filmPixel(x, y), p.albedo, p.normal, p.depth, p.hits);
                         }
                 }
-                if (progress) progress->done.fetch_add(last - first, std::memory_order_relaxed);
+                if (progress && !recorders) progress->done.fetch_add(last - first, std::memory_order_relaxed);
             }
         },
         tbb::simple_partitioner());
@@ -280,11 +289,18 @@ RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& c
     tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
     auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    uint32_t renderFrom = begin; // after the guide's training samples
     arena.execute([&] {
         // The guide is learnt first, inside the time budget (a quarter of it at most): --guide's
-        // cost is the render's.
-        result.rays += renderer.trainGuide(progress, budget.seconds / 4.0);
+        // cost is the render's. Its passes are the image's first samples, kept.
+        result.rays += renderer.trainGuide(&film, begin, end, startAt.empty() ? nullptr : &startAt, progress, budget.seconds / 4.0);
         if (const PathGuide* guide = renderer.guide()) {
+            const uint32_t trained = std::clamp(renderer.guideSppTrained(), begin, end);
+            for (uint32_t& s : startAt)
+                if (s != kNever) s = std::max(s, trained);
+            if (progress) progress->done.fetch_add(uint64_t(trained - begin) * renderer.tileCount());
+            if (progress) progress->samplesComplete.store(trained - begin);
+            renderFrom = trained;
             result.guideSpp = renderer.guideSppTrained();
             result.guideBytes = guide->bytes();
             result.guideLimited = guide->limited();
@@ -292,7 +308,7 @@ RenderResult renderImage(const Scene& scene, const Accel& accel, const Camera& c
             result.guidedFraction = guide->guidedFraction();
         }
         double secondsPerPixelSample = 0.0; // of the last pass, for the time budget
-        for (uint32_t first = begin; first < end;) {
+        for (uint32_t first = renderFrom; first < end;) {
             if (progress && progress->cancel.load()) break;
             size_t sampling = pixels;
             if (!startAt.empty()) sampling = size_t(std::count_if(startAt.begin(), startAt.end(), [&](uint32_t s) { return s < end; }));

@@ -52,11 +52,15 @@ public:
                             const std::vector<uint32_t>* startAt = nullptr) const;
 
     // --guide: learns the path guide in passes of 1, 2, 4, ... samples per pixel of the whole
-    // image (a crop's too, so that every part of a job learns the same guide), from samples of
-    // their own (another seed), until settings.guideSpp are spent; the render's samples are then
-    // guided by it. Deterministic. Returns the rays traced; stops early on a cancel request, and
-    // before a pass that would take it past `seconds` (0: no limit; a --time render's share).
-    RayCounts trainGuide(RenderProgress* progress = nullptr, double seconds = 0.0);
+    // image (a crop's too, so that every part of a job learns the same guide), until
+    // settings.guideSpp are spent; the render's later samples are then guided by it. The passes
+    // are the image's first samples: those in [keepFirst, keepLast) of the window's pixels (from a
+    // pixel's `startAt` entry on, when given) go into `film`. Each pass draws under a seed of its
+    // own, so that its samples are independent of the guide they are drawn by. Deterministic.
+    // Returns the rays traced; stops early on a cancel request, and before a pass that would take
+    // it past `seconds` (0: no limit; a --time render's share).
+    RayCounts trainGuide(Film* film, uint32_t keepFirst, uint32_t keepLast, const std::vector<uint32_t>* startAt = nullptr,
+                         RenderProgress* progress = nullptr, double seconds = 0.0);
     uint32_t guideSppTrained() const { return guideSppTrained_; }
     // Whether training stopped before settings.guideSpp because the guide had learnt to guide
     // almost none of the bounces (PathGuide::guidedFraction).
@@ -67,15 +71,20 @@ public:
     const PixelWindow& window() const { return window_; }
 
 private:
-    // Samples [first, last) of every pixel of `window` under `seed`, into `film` (if any, over
-    // the window) and, in training, into each tile's recorder.
+    // One pass over the pixels of `window`: samples [first, last), drawn under `seed` at sample
+    // indices from `indexBase` on. What goes into the film (over window_): a pixel's samples from
+    // max(keepFirst, its startAt entry) to keepLast; in training, `recorders` take every sample.
+    struct Pass {
+        uint32_t first = 0, last = 0;
+        uint64_t seed = 0;
+        uint32_t indexBase = 0;
+        PixelWindow window;
+        uint32_t keepFirst = 0, keepLast = 0;
+        std::vector<GuideRecorder>* recorders = nullptr;
+    };
     template <typename Sampler>
-    RayCounts renderSamplesWith(Film* film, uint32_t first, uint32_t last, RenderProgress* progress,
-                                const std::vector<uint32_t>* startAt, uint64_t seed, const PixelWindow& window,
-                                std::vector<GuideRecorder>* recorders) const;
-    RayCounts renderPass(Film* film, uint32_t first, uint32_t last, RenderProgress* progress,
-                         const std::vector<uint32_t>* startAt, uint64_t seed, const PixelWindow& window,
-                         std::vector<GuideRecorder>* recorders) const;
+    RayCounts renderSamplesWith(Film* film, const Pass& pass, RenderProgress* progress, const std::vector<uint32_t>* startAt) const;
+    RayCounts renderPass(Film* film, const Pass& pass, RenderProgress* progress, const std::vector<uint32_t>* startAt) const;
     static size_t tilesIn(const PixelWindow& w) {
         return size_t((w.width() + kTileSize - 1) / kTileSize) * size_t((w.height() + kTileSize - 1) / kTileSize);
     }

@@ -21,7 +21,8 @@ reading two noisy curves at one time.
 With --pt-noise C, pt also races with adaptive sampling: at N spp it renders with --noise
 C/sqrt(N), the target falling as the uniform error does, and --min-spp min(16, N); its error x
 seconds is reported beside the others (issue 27). With --pt-guide, pt also races with --guide, its
-training samples (a quarter of the count, at most 63) inside its time (issue 38).
+training passes (a quarter of the count at most, at most 63; the image's first samples) inside
+its time (issue 38).
 
 Writes bench/charts/race_NAME.csv and .png (error against seconds, both renderers) and prints
 seconds per sample and the equal-time error ratio. Run it with tools/crosscheck/race, which
