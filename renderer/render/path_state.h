@@ -59,6 +59,10 @@ struct PathState {
     Vec3 prevN{0.0f};         // and the shading normal there (the light tree weighs emitters by it)
     float prevPdf = 0.0f;     // BSDF pdf of the ray's direction (non-delta)
     float etaScale = 1.0f;    // product of radiance scalings at refractions, undone for roulette
+    // The product, over the path's guided vertices, of the BSDF's density over the mixed one at
+    // the direction taken: how many times guiding has scaled the throughput above what the
+    // BSDF's own sampling would have given it (scatter.h's kMaxGuideGain bounds it).
+    float guideGain = 1.0f;
     // Ray cone for texture footprints: width at the ray's origin. It keeps the camera's spread
     // after a bounce rather than the lobe's: filtering a texture over a rough lobe's footprint
     // blurs it against the light that varies across it, a bias the crosscheck measured (+0.3 %).

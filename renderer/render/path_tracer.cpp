@@ -137,6 +137,7 @@ bool PathTracer::continuePath(PathState<Sampler>& path, const SurfacePoint& sp, 
         path.medium = mediumAfterCrossing(path.medium, sp.material, m, wi, sp.ng);
     path.beta *= bs.weight;
     path.etaScale *= bs.radianceScale;
+    if (guide.share > 0.0f && !bs.isDelta()) path.guideGain *= parts.bsdf / bs.pdf;
     // Through a mirror or smooth glass: what it passes tints the features of what lies beyond
     // (without refraction's radiance scaling, which is no colour).
     if (firstHits && path.first.open) path.first.tint *= bs.weight / bs.radianceScale;
@@ -220,7 +221,8 @@ bool PathTracer::shade(PathState<Sampler>& path, const Hit& hit, const VertexDra
     }
     if (bsdf.isBlack()) return false;
     const ScatterGuide guide =
-        guide_ ? scatterGuideAt(guide_, sp.p, shading.wo.z >= 0.0f ? shading.frame.n : -shading.frame.n, bsdf, path.guide != nullptr)
+        guide_ ? scatterGuideAt(guide_, sp.p, shading.wo.z >= 0.0f ? shading.frame.n : -shading.frame.n, bsdf,
+                                path.guide != nullptr, path.guideGain)
                : ScatterGuide{};
     if (settings_.lightSampling != LightSampling::Bsdf && !lights_.empty() && bsdf.hasNonDelta())
         sampleLight(path, sp, m, shading, guide, ng, u, slot, shadows, counts);

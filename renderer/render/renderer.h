@@ -66,6 +66,12 @@ public:
     // almost none of the bounces (PathGuide::guidedFraction).
     bool guideSettled() const { return guideSettled_; }
     const PathGuide* guide() const { return guide_.get(); }
+    // Guides the samples rendered from now on by `guide`, learnt elsewhere, instead of training
+    // one: the render's samples are drawn as those after training are.
+    void useGuide(std::unique_ptr<PathGuide> guide) {
+        guide_ = std::move(guide);
+        tracer_.setGuide(guide_.get());
+    }
 
     size_t tileCount() const { return tilesIn(window_); }
     const PixelWindow& window() const { return window_; }
