@@ -8,6 +8,7 @@
 #include "image/flip.h"
 #include "image/image_io.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -26,7 +27,8 @@ with --threshold instead (not a statistical test; a warning says so).
 
 options (default in brackets):
   --alpha A            false-failure rate for the whole image [0.001]
-  --block N            smallest block side in pixels; larger blocks double up to 64 [8]
+  --block N            smallest block side in pixels; larger blocks double up to 64 [8]; an image
+                       smaller than N is tested with blocks as large as its longer side
   --threshold T        without variance layers: fail when the relative MSE exceeds T [0.001]
   --heatmap OUT.png    write where the images differ (red at the threshold, yellow at twice it)
   --json OUT.json      write the report as JSON
@@ -198,6 +200,9 @@ int diffCommand(int argc, char** argv) {
     if (!quiet || !json.empty()) flip = hdrFlip(test.rgb, reference.rgb, test.width, test.height, ppd);
     if (!quiet) {
         std::printf("pt diff: %s vs %s (%dx%d)\n", files[0].c_str(), files[1].c_str(), test.width, test.height);
+        if (r.statistical && r.smallestBlock < options.blockSize)
+            std::printf("  note: the image is smaller than --block %d: its smallest blocks are %d pixels a side%s\n",
+                        options.blockSize, r.smallestBlock, r.smallestBlock == std::max(test.width, test.height) ? " (the whole image)" : "");
         if (r.statistical) {
             std::printf("  %zu of %zu block tests beyond |z| > %.2f (false-failure rate %g for the image)\n",
                         r.failedTests, r.tests, r.zThreshold, options.falsePositiveRate);

@@ -99,6 +99,11 @@ oiiotool "$tmp/a.exr" --mulc 1.5 -o "$tmp/bright.exr"
 expect 1 "the images DIFFER" "$pt" diff "$tmp/bright.exr" "$tmp/a.exr"
 expect 2 "--ppd: 0 is out of range" "$pt" diff "$tmp/bright.exr" "$tmp/a.exr" --ppd 0
 expect 2 "expected TEST and REFERENCE" "$pt" diff "$tmp/a.exr"
+# A comparison that cannot fail must not pass: an image smaller than the blocks is tested whole.
+"$pt" render "$scene" -spp 16 --res 4x4 --aov variance -q -o "$tmp/tiny.exr" >/dev/null
+"$pt" render "$scene" -spp 16 --res 4x4 --max-depth 0 --aov variance -q -o "$tmp/tiny_lamp.exr" >/dev/null
+expect 1 "the images DIFFER" "$pt" diff "$tmp/tiny_lamp.exr" "$tmp/tiny.exr"
+expect 1 "its smallest blocks are 16 pixels a side (the whole image)" "$pt" diff "$tmp/bright.exr" "$tmp/a.exr" --block 4096
 
 # --clamp bounds every sample, so every pixel mean, and says so in the summary.
 expect 0 "clamped (--clamp biases the image)" "$pt" render "$scene" -spp 8 --res 32x32 --clamp 0.25 -o "$tmp/clamp.exr"

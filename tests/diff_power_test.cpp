@@ -135,5 +135,51 @@ TEST_F(DiffPower, SizeMismatchIsAnInputError) {
     EXPECT_NE(compare(small).inputError.find("size mismatch"), std::string::npos);
 }
 
+// A comparison that cannot fail must not pass: blocks larger than the image (--block 129 on a
+// 128 x 128 image) test it as one block, and a brighter lamp fails there.
+TEST_F(DiffPower, BlocksLargerThanTheImageTestItWhole) {
+    Image test = render(1);
+    CompareOptions o;
+    std::string error;
+    o.testCounts.assign(size_t(kSize) * kSize, float(kTestSpp));
+    o.referenceCounts = pixelSampleCounts(*reference_, error);
+    o.blockSize = 129;
+    o.maxBlockSize = 129;
+    CompareReport same = compareImages(test, *reference_, o);
+    EXPECT_TRUE(same.pass);
+    ASSERT_GE(same.tests, 3u) << "the whole image (and its halves, on the grid shifted by half a block)";
+    EXPECT_EQ(same.smallestBlock, kSize);
+    for (float& v : test.rgb) v *= 1.03f;
+    CompareReport brighter = compareImages(test, *reference_, o);
+    EXPECT_FALSE(brighter.pass) << "z " << brighter.worst[0].z << " of threshold " << brighter.zThreshold;
+}
+
+// Images of any shape, against blocks of any size: every pixel lies in a tested block, so a
+// difference planted in any one pixel (with no noise to hide it, and large enough to stand out of
+// a block of 300 x 129 pixels beyond the comparison's floor of 0.1 % of the mean) fails.
+TEST(DiffBlocks, EveryPixelOfEveryShapeIsTested) {
+    for (auto [w, h] : {std::pair{1, 1}, {4, 4}, {1, 40}, {40, 1}, {7, 300}, {3, 9}, {128, 128}})
+        for (int block : {1, 8, 129}) {
+            Image ref;
+            ref.width = w;
+            ref.height = h;
+            ref.rgb.assign(size_t(w) * h * 3, 1.0f);
+            ref.layers.push_back({"variance", {"R", "G", "B"}, std::vector<float>(size_t(w) * h * 3, 1e-6f)});
+            CompareOptions o;
+            o.blockSize = block;
+            o.maxBlockSize = std::max(64, block);
+            ASSERT_TRUE(compareImages(ref, ref, o).pass);
+            for (int y = 0; y < h; y += std::max(1, h / 5))
+                for (int x = 0; x < w; x += std::max(1, w / 5)) {
+                    Image test = ref;
+                    test.rgb[3 * (size_t(y) * w + x) + 1] = 1000.0f;
+                    CompareReport r = compareImages(test, ref, o);
+                    EXPECT_GT(r.tests, 0u);
+                    EXPECT_FALSE(r.pass) << w << "x" << h << ", --block " << block << ": pixel (" << x << ", " << y
+                                         << ") is in no tested block";
+                }
+        }
+}
+
 } // namespace
 } // namespace pt

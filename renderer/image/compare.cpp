@@ -110,20 +110,25 @@ struct Block {
     int x0, y0, x1, y1;
 };
 
-// Every block of every scale and grid offset; blocks cut by the image edge keep at least half
-// their area.
+// Every block of every scale and grid offset. A block cut by the image edge is kept where it
+// holds at least half of what a whole one would inside the image (an image narrower than the
+// block holds only a strip of it), so every pixel lies in some block. The smallest scale is at
+// most the image's longer side: an image smaller than the block is tested as one block, never
+// not at all.
 std::vector<Block> allBlocks(int w, int h, const CompareOptions& o) {
     std::vector<Block> blocks;
-    for (int s = std::max(1, o.blockSize); s <= std::max(o.blockSize, o.maxBlockSize); s *= 2) {
+    const int smallest = std::clamp(o.blockSize, 1, std::max(w, h));
+    for (int s = smallest; s <= std::max(smallest, o.maxBlockSize); s *= 2) {
         if (s > std::max(w, h)) break;
-        int half = std::max(1, s / 2);
+        const int half = std::max(1, s / 2);
+        const int whole = std::min(s, w) * std::min(s, h);
         for (int oy : {0, half})
             for (int ox : {0, half}) {
                 if (s == 1 && (ox || oy)) continue;
                 for (int y0 = oy - (oy ? s : 0); y0 < h; y0 += s)
                     for (int x0 = ox - (ox ? s : 0); x0 < w; x0 += s) {
                         Block b{std::max(0, x0), std::max(0, y0), std::min(w, x0 + s), std::min(h, y0 + s)};
-                        if (2 * (b.x1 - b.x0) * (b.y1 - b.y0) >= std::min(s * s, w * h)) blocks.push_back(b);
+                        if (2 * (b.x1 - b.x0) * (b.y1 - b.y0) >= whole) blocks.push_back(b);
                     }
             }
     }
@@ -176,6 +181,11 @@ CompareReport compareImages(const Image& test, const Image& reference, const Com
     };
     const std::vector<Block> blocks = allBlocks(w, h, options);
     r.tests = 3 * blocks.size();
+    r.smallestBlock = std::clamp(options.blockSize, 1, std::max(w, h));
+    if (blocks.empty()) { // cannot happen (allBlocks covers every pixel), but a test of nothing must not pass
+        r.inputError = "no block of the image could be tested";
+        return r;
+    }
     r.zThreshold = bonferroniZ(options.falsePositiveRate, double(r.tests));
 
     std::vector<BlockDifference> all;

@@ -49,6 +49,7 @@ struct CompareReport {
     double meanAbsError = 0;
     double zThreshold = 0;
     size_t tests = 0, failedTests = 0;
+    int smallestBlock = 0;    // side of the smallest blocks: options.blockSize, or the image's longer side where that is less
     std::vector<BlockDifference> worst; // largest |z| first, overlapping blocks merged away
     // Per pixel: the largest |z| / zThreshold of any block covering it (1 = at the threshold).
     std::vector<float> heat;
