@@ -20,7 +20,9 @@ const char* kDenoiseUsage = R"(usage: pt denoise IN.exr -o OUT [options]
 Denoises a pt render with Intel Open Image Denoise (the RT filter on the CPU), guided by the
 render's albedo and normal layers (pt render --aov albedo,normal), which are denoised first. OUT
 (.exr) holds the denoised RGB, the raw estimate as layer noisy (noisy.R, noisy.G, noisy.B), IN's
-other layers and metadata, and pt:denoiser; a .png holds the denoised picture. An IN that is
+other channels (A and the like among them, as they were) and metadata, and pt:denoiser; a .png
+holds the denoised picture alone. IN must have R, G and B channels: a file without them (its
+picture in a layer, or grey) is refused, naming what it has. An IN that is
 already denoised is denoised again from its raw estimate. A part of a split render holds sums,
 not an image: pt merge --denoise it.
 
@@ -37,15 +39,27 @@ options (default in brackets):
 Needs Intel Open Image Denoise 2.x: tools/install-oidn installs 2.5.1 where pt finds it;
 PT_OIDN_LIBRARY=/path/to/libOpenImageDenoise.so.2 names another.
 
-exit status: 0 denoised, 1 bad input (unreadable, no albedo or normal layer, a part, an error
-inside the filter, a library that is not OIDN 2.x), 2 bad usage (the library is not installed).
+exit status: 0 denoised, 1 bad input (unreadable, no R, G, B picture, no albedo or normal layer,
+a part, an error inside the filter, a library that is not OIDN 2.x or is damaged), 2 bad usage
+(the library is not installed).
 )";
 
-// The RGB of layer `name` with `channels`, or why it cannot be used.
-const ImageLayer* featureLayer(const Image& image, const char* name, const std::vector<std::string>& channels) {
-    auto it = std::find_if(image.layers.begin(), image.layers.end(),
-                           [&](const ImageLayer& l) { return l.name == name && l.channels == channels; });
-    return it == image.layers.end() ? nullptr : &*it;
+// Layer `name`'s channels `channels`, picked by name (in any order, beside any others the layer
+// has) and interleaved; empty where the layer or one of them is missing.
+std::vector<float> featureChannels(const Image& image, const std::string& name, const std::vector<std::string>& channels) {
+    auto layer = std::find_if(image.layers.begin(), image.layers.end(), [&](const ImageLayer& l) { return l.name == name; });
+    if (layer == image.layers.end()) return {};
+    std::vector<size_t> index;
+    for (const std::string& c : channels) {
+        auto it = std::find(layer->channels.begin(), layer->channels.end(), c);
+        if (it == layer->channels.end()) return {};
+        index.push_back(size_t(it - layer->channels.begin()));
+    }
+    const size_t stride = layer->channels.size(), n = size_t(image.width) * size_t(image.height);
+    std::vector<float> out(n * channels.size());
+    for (size_t i = 0; i < n; ++i)
+        for (size_t c = 0; c < index.size(); ++c) out[i * index.size() + c] = layer->pixels[i * stride + index[c]];
+    return out;
 }
 
 } // namespace
@@ -109,19 +123,23 @@ int denoiseCommand(int argc, char** argv) {
     if (error.empty() && !attributeText(image, "pt:part").empty())
         error = input + " is a part of a split render (per-pixel sums, not an image): merge the parts with "
                         "pt merge --denoise";
+    if (error.empty() && image.beauty != Image::Beauty::Rgb)
+        error = input + " has " +
+                (image.beauty == Image::Beauty::Grey ? std::string("a grey picture (Y) and no R, G, B channels")
+                                                     : missingRgb(image)) +
+                "; pt denoise denoises the R, G, B picture of a pt render, guided by its albedo and normal layers";
     bool again = false;
     if (error.empty()) {
         std::string why;
         again = restoreRawEstimate(image, why);
         if (!why.empty()) error = input + ": " + why;
     }
-    const ImageLayer* albedo = nullptr;
-    const ImageLayer* normal = nullptr;
+    std::vector<float> albedo, normal;
     if (error.empty()) {
-        albedo = featureLayer(image, "albedo", {"R", "G", "B"});
-        normal = featureLayer(image, "normal", {"X", "Y", "Z"});
-        if (!albedo || !normal)
-            error = input + " has no " + (albedo ? "normal layer (normal.X, normal.Y, normal.Z)" : "albedo layer (albedo.R, albedo.G, albedo.B)") +
+        albedo = featureChannels(image, "albedo", {"R", "G", "B"});
+        normal = featureChannels(image, "normal", {"X", "Y", "Z"});
+        if (albedo.empty() || normal.empty())
+            error = input + " has no " + (!albedo.empty() ? "normal layer (normal.X, normal.Y, normal.Z)" : "albedo layer (albedo.R, albedo.G, albedo.B)") +
                     ", which guides the denoiser: render it with --aov albedo,normal (or with --denoise)";
     }
     if (!error.empty()) {
@@ -135,7 +153,7 @@ int denoiseCommand(int argc, char** argv) {
         return 2;
     }
     DenoiseReport report;
-    if (std::string e = denoiseImage(*denoiser, image, albedo->pixels, normal->pixels, options, report); !e.empty()) {
+    if (std::string e = denoiseImage(*denoiser, image, std::move(albedo), std::move(normal), options, report); !e.empty()) {
         std::fprintf(err, "pt denoise: error: %s\n", e.c_str());
         return 1;
     }

@@ -43,7 +43,7 @@ difference is (noise included), where the z-test says whether it is more than no
 The heat map and the JSON are written whole or not at all, and never over TEST or REFERENCE.
 
 exit status: 0 the images agree, 1 they differ, 2 bad input (a missing or unreadable file, not a
-regular file, a multipart EXR, sizes or channel lists that differ (the spp layer aside), NaN or Inf
+regular file, a multipart EXR, no R, G, B (or grey Y) picture, sizes or channel lists that differ (the spp layer aside), NaN or Inf
 in an image, which is reported with its pixel, a pixel of one sample, whose variance is unknown,
 an image whose pixels hold different counts without an spp layer), bad usage, or a report that
 could not be written
@@ -141,6 +141,8 @@ int diffCommand(int argc, char** argv) {
     Image test, reference;
     for (auto [path, image] : {std::pair{&files[0], &test}, std::pair{&files[1], &reference}}) {
         std::string error = readImage(*path, *image);
+        if (error.empty() && image->beauty == Image::Beauty::Missing)
+            error = "\"" + *path + "\" has " + missingRgb(*image) + "; pt diff compares the R, G, B (or grey Y) pictures of two images";
         if (error.empty() && image->parts > 1)
             error = "\"" + *path + "\" has " + std::to_string(image->parts) +
                     " parts; pt diff compares single-part images such as pt render writes";

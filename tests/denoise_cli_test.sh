@@ -53,6 +53,24 @@ python3 "$root/tests/compare_exact.py" "$tmp/pd.exr" "$tmp/pd2.exr" >/dev/null 2
 "$pt" render "$scene" "${small[@]}" -o "$tmp/plain.exr" >/dev/null
 expect 1 "has no albedo layer (albedo.R, albedo.G, albedo.B)" "$pt" denoise "$tmp/plain.exr" -o "$tmp/y.exr"
 expect 1 "has no normal layer (normal.X, normal.Y, normal.Z)" "$pt" denoise "$tmp/alb.exr" -o "$tmp/y.exr"
+# Channels are read by name: a file without an R, G, B picture is refused, naming what it has,
+# never denoised from its albedo; a channel beside R, G, B (A) is kept as it was.
+features=albedo.R,albedo.G,albedo.B,normal.X,normal.Y,normal.Z
+oiiotool "$tmp/raw.exr" --ch $features -o "$tmp/ch_none.exr"
+oiiotool "$tmp/raw.exr" --ch beauty.R=R,beauty.G=G,beauty.B=B,$features -o "$tmp/ch_layer.exr"
+oiiotool "$tmp/raw.exr" --ch Y=R,$features -o "$tmp/ch_y.exr"
+oiiotool "$tmp/raw.exr" --ch R,G,$features -o "$tmp/ch_rg.exr"
+oiiotool "$tmp/raw.exr" --ch R,G,B,A=0.5,$features -o "$tmp/ch_rgba.exr"
+expect 1 "has no R, G or B channel (its channels: albedo.R" "$pt" denoise "$tmp/ch_none.exr" -o "$tmp/y.exr"
+expect 1 "has no R, G or B channel (its channels: albedo.R, albedo.G, albedo.B, beauty.R" "$pt" denoise "$tmp/ch_layer.exr" -o "$tmp/y.exr"
+expect 1 "has a grey picture (Y) and no R, G, B channels" "$pt" denoise "$tmp/ch_y.exr" -o "$tmp/y.exr"
+expect 1 "has R and G but no B" "$pt" denoise "$tmp/ch_rg.exr" -o "$tmp/y.exr"
+expect 2 "has no R, G or B channel" "$pt" diff "$tmp/ch_none.exr" "$tmp/raw.exr"
+expect 0 "pt denoise: 48x36" "$pt" denoise "$tmp/ch_rgba.exr" -o "$tmp/rgba.exr"
+[[ $(channels "$tmp/rgba.exr") == "R, G, B, A, albedo.R, albedo.G, albedo.B, noisy.R, noisy.G, noisy.B, normal.X, normal.Y, normal.Z" ]] ||
+  { echo "FAIL: pt denoise of R, G, B, A wrote $(channels "$tmp/rgba.exr")"; failures=$((failures + 1)); }
+oiiotool "$tmp/rgba.exr" --ch A --printstats 2>/dev/null | grep -q "Max: 0.500000" ||
+  { echo "FAIL: the A channel did not come through pt denoise as it was"; failures=$((failures + 1)); }
 expect 2 "expected high, balanced or fast" "$pt" denoise "$tmp/raw.exr" --quality best -o "$tmp/y.exr"
 [[ -e $tmp/y.exr ]] && { echo "FAIL: a refused pt denoise left $tmp/y.exr"; failures=$((failures + 1)); }
 

@@ -1,6 +1,7 @@
 #include "image/image_input.h"
 #include "image/image_io.h"
 
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -30,6 +31,50 @@ TEST(ImageIo, ExrRoundTripsLayersAndMetadata) {
     bool found = false;
     for (auto& a : back.metadata) found |= a.name == "pt:spp" && a.type == ImageAttribute::Type::Int && a.integer == 64;
     EXPECT_TRUE(found);
+}
+
+// Channels are read by name: R, G, B make the picture; a channel named alone beside them (A)
+// comes back as it was, in the layer ""; a file without R, G, B has no picture (never its first
+// channels taken for one), and says what it lacks; a grey file's Y is its picture.
+TEST(ImageIo, ChannelsAreReadByName) {
+    const std::string dir = fs::path(::testing::TempDir()).string();
+    Image img;
+    img.width = 2;
+    img.height = 1;
+    img.rgb = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f};
+    img.layers.push_back({"", {"A"}, {1.0f, 0.5f}});
+    img.layers.push_back({"albedo", {"R", "G", "B"}, std::vector<float>(6, 0.7f)});
+    ASSERT_EQ(writeImage(dir + "/pt_rgba.exr", img), "");
+    Image back;
+    ASSERT_EQ(readImage(dir + "/pt_rgba.exr", back), "");
+    EXPECT_EQ(back.beauty, Image::Beauty::Rgb);
+    EXPECT_EQ(back.rgb, img.rgb);
+    ASSERT_EQ(back.layers.size(), 2u);
+    EXPECT_EQ(back.layers[0].name, "");
+    EXPECT_EQ(back.layers[0].pixels, img.layers[0].pixels);
+    EXPECT_EQ(missingRgb(back), "");
+
+    // writeImage always writes R, G, B: files without them come from OpenImageIO's own writer.
+    {
+        std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(dir + "/pt_norgb.exr");
+        OIIO::ImageSpec spec(2, 1, 4, OIIO::TypeDesc::FLOAT);
+        spec.channelnames = {"albedo.R", "albedo.G", "albedo.B", "Y"};
+        const float px[8] = {0.7f, 0.7f, 0.7f, 0.25f, 0.7f, 0.7f, 0.7f, 0.75f};
+        ASSERT_TRUE(out && out->open(dir + "/pt_norgb.exr", spec) && out->write_image(OIIO::TypeDesc::FLOAT, px) && out->close());
+        spec.channelnames = {"R", "G", "albedo.R"};
+        spec.nchannels = 3;
+        out = OIIO::ImageOutput::create(dir + "/pt_rg.exr");
+        ASSERT_TRUE(out && out->open(dir + "/pt_rg.exr", spec) && out->write_image(OIIO::TypeDesc::FLOAT, px) && out->close());
+    }
+    Image grey;
+    ASSERT_EQ(readImage(dir + "/pt_norgb.exr", grey), "");
+    EXPECT_EQ(grey.beauty, Image::Beauty::Grey) << "Y is a grey picture";
+    EXPECT_EQ(grey.rgb, (std::vector<float>{0.25f, 0.25f, 0.25f, 0.75f, 0.75f, 0.75f}));
+    Image rg;
+    ASSERT_EQ(readImage(dir + "/pt_rg.exr", rg), "");
+    EXPECT_EQ(rg.beauty, Image::Beauty::Missing);
+    EXPECT_EQ(missingRgb(rg), "R and G but no B (its channels: R, G, albedo.R)");
+    EXPECT_EQ(rg.rgb, std::vector<float>(6, 0.0f)) << "no channel stands in for B";
 }
 
 TEST(ImageIo, PngIsSrgbEncoded) {

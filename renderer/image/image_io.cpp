@@ -95,7 +95,7 @@ static std::string encodeImage(ImageFormat format, const Image& image, std::vect
     // EXR: R, G, B first so that every viewer shows the beauty, then the layers.
     std::vector<std::string> names = {"R", "G", "B"};
     for (const ImageLayer& layer : image.layers)
-        for (const std::string& c : layer.channels) names.push_back(layer.name + "." + c);
+        for (const std::string& c : layer.channels) names.push_back(layer.name.empty() ? c : layer.name + "." + c);
     int nc = int(names.size());
     OIIO::ImageSpec spec(image.width, image.height, nc, OIIO::TypeDesc::FLOAT);
     if (image.fullWidth > 0) {
@@ -170,35 +170,49 @@ static std::string decodeImage(OIIO::ImageInput* in, const std::string& path, Im
     }
     image.parts = parts;
     for (int c = 0; c < nc; ++c)
-        image.channelNames.push_back(c < int(spec.channelnames.size()) ? spec.channelnames[c] : "channel" + std::to_string(c));
+        image.channelNames.push_back(c < int(spec.channelnames.size()) && !spec.channelnames[c].empty() ? spec.channelnames[c]
+                                                                                                      : "channel" + std::to_string(c));
     size_t n = size_t(w) * h;
     int rgbIndex[3] = {-1, -1, -1};
     std::map<std::string, std::vector<std::pair<std::string, int>>> layerChannels;
     std::vector<std::string> layerOrder;
     for (int c = 0; c < nc; ++c) {
-        std::string name = c < int(spec.channelnames.size()) ? spec.channelnames[c] : "";
+        const std::string& name = image.channelNames[size_t(c)];
+        const auto dot = name.rfind('.');
         if (name == "R") rgbIndex[0] = c;
         else if (name == "G") rgbIndex[1] = c;
         else if (name == "B") rgbIndex[2] = c;
-        else if (auto dot = name.rfind('.'); dot != std::string::npos) {
-            std::string layer = name.substr(0, dot);
+        else {
+            std::string layer = dot == std::string::npos ? "" : name.substr(0, dot);
             if (!layerChannels.count(layer)) layerOrder.push_back(layer);
-            layerChannels[layer].emplace_back(name.substr(dot + 1), c);
+            layerChannels[layer].emplace_back(dot == std::string::npos ? name : name.substr(dot + 1), c);
         }
     }
-    if (rgbIndex[0] < 0) { // unnamed channels (PNG, JPEG): first three, or grey
-        for (int c = 0; c < 3; ++c) rgbIndex[c] = std::min(c, nc - 1);
-        if (nc == 2) rgbIndex[1] = rgbIndex[2] = 0; // grey + alpha
+    // No R, G, B: a grey image's one channel (Y, as OpenImageIO names a grey PNG's; or a file's
+    // only channel) is the picture, in all three.
+    if (rgbIndex[0] < 0 && rgbIndex[1] < 0 && rgbIndex[2] < 0) {
+        auto& alone = layerChannels[""];
+        auto grey = std::find_if(alone.begin(), alone.end(), [](const auto& c) { return c.first == "Y"; });
+        if (grey == alone.end() && nc == 1 && !alone.empty()) grey = alone.begin();
+        if (grey != alone.end()) {
+            rgbIndex[0] = rgbIndex[1] = rgbIndex[2] = grey->second;
+            image.beauty = Image::Beauty::Grey;
+            alone.erase(grey);
+        }
+        if (alone.empty()) {
+            layerChannels.erase("");
+            std::erase(layerOrder, std::string());
+        }
     }
-    for (int c = 0; c < 3; ++c)
-        if (rgbIndex[c] < 0) rgbIndex[c] = rgbIndex[0];
+    if (rgbIndex[0] < 0 || rgbIndex[1] < 0 || rgbIndex[2] < 0) image.beauty = Image::Beauty::Missing;
     bool srgb = spec.format.basetype != OIIO::TypeDesc::FLOAT && spec.format.basetype != OIIO::TypeDesc::HALF;
-    image.rgb.resize(n * 3);
-    for (size_t i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c) {
-            float v = pixels[i * nc + rgbIndex[c]];
-            image.rgb[3 * i + c] = srgb ? srgbToLinear(v) : v;
-        }
+    image.rgb.assign(n * 3, 0.0f);
+    if (image.beauty != Image::Beauty::Missing)
+        for (size_t i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c) {
+                float v = pixels[i * nc + rgbIndex[c]];
+                image.rgb[3 * i + c] = srgb ? srgbToLinear(v) : v;
+            }
     for (const std::string& name : layerOrder) {
         ImageLayer layer;
         layer.name = name;
@@ -225,6 +239,20 @@ std::string readImage(const std::string& path, Image& image) {
     auto in = openImageFile(path, error);
     if (!in) return "cannot read \"" + path + "\": " + error;
     return decodeImage(in.get(), path, image, 0.5 * physicalMemoryBytes());
+}
+
+std::string missingRgb(const Image& image) {
+    if (image.beauty != Image::Beauty::Missing) return "";
+    std::string have, channels;
+    for (const char* c : {"R", "G", "B"})
+        if (std::find(image.channelNames.begin(), image.channelNames.end(), c) != image.channelNames.end())
+            have += std::string(have.empty() ? "" : " and ") + c;
+    for (const std::string& c : image.channelNames) channels += (channels.empty() ? "" : ", ") + c;
+    std::string lacks;
+    for (const char* c : {"R", "G", "B"})
+        if (std::find(image.channelNames.begin(), image.channelNames.end(), c) == image.channelNames.end())
+            lacks += std::string(lacks.empty() ? "" : " or ") + c;
+    return (have.empty() ? "no R, G or B channel" : have + " but no " + lacks) + " (its channels: " + channels + ")";
 }
 
 std::string readImageFromMemory(const std::vector<unsigned char>& bytes, const std::string& name, Image& image,

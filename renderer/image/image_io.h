@@ -11,7 +11,8 @@ namespace pt {
 class OutputFile;
 
 struct ImageLayer {
-    std::string name;       // channel prefix: "variance" gives variance.R, variance.G, ...
+    std::string name;       // channel prefix: "variance" gives variance.R, variance.G, ...; "" the
+                            // channels named alone beside R, G, B (A, Z), written as they were
     std::vector<std::string> channels; // e.g. {"R","G","B"} or {"Z"}
     std::vector<float> pixels;          // interleaved, channels.size() values per pixel
 };
@@ -40,6 +41,11 @@ struct Image {
     std::vector<ImageLayer> layers;
     std::vector<ImageAttribute> metadata;
     std::vector<std::string> channelNames; // as read from a file, in its order (readImage only)
+    // What rgb holds of a file read (readImage): its R, G and B channels; its one grey channel
+    // (Y, or a file's only channel) in all three; or nothing (zeros), the file having no R, G, B
+    // or only some of them (missingRgb() says which).
+    enum class Beauty { Rgb, Grey, Missing };
+    Beauty beauty = Beauty::Rgb;
     int parts = 1;                         // subimages in the file read (multipart EXR)
 };
 
@@ -56,12 +62,16 @@ std::string writeImage(const std::string& path, const Image& image);
 // Same, into an OutputFile opened earlier (before rendering), in the format of its path.
 std::string writeImage(OutputFile& file, const Image& image);
 
-// Reads an image (any format OpenImageIO knows) into `image`: R, G, B into rgb (grey replicated)
-// and other channels grouped into layers by their "prefix." name; of a multipart EXR, the first
+// Reads an image (any format OpenImageIO knows) into `image`: R, G, B into rgb (a grey image's
+// channel into all three; image.beauty says which) and the other channels grouped into layers by
+// their "prefix." name, those named alone (A, Z) into the layer ""; of a multipart EXR, the first
 // part. Refuses what is not a regular file (a FIFO or /dev/zero would block or never end) and an
 // image whose header declares more pixels than half this machine's memory holds, before reading
 // them. Returns "" or the error.
 std::string readImage(const std::string& path, Image& image);
+// Where a file read has no RGB beauty (Image::Beauty::Missing), what it lacks, for a message:
+// "no R, G or B channel (its channels: albedo.R, albedo.G, ...)", "R and G but no B (...)".
+std::string missingRgb(const Image& image);
 // The same for an image file held in memory, which `name` stands for, with the bytes its pixels
 // may take (the part fuzzer's entry, with a fuzzer's memory).
 std::string readImageFromMemory(const std::vector<unsigned char>& bytes, const std::string& name, Image& image,
