@@ -4,6 +4,7 @@
 // run time; its tests are skipped with a message where it is not installed, and fail instead
 // when PT_REQUIRE_OIDN is set (as CI sets it).
 #include "denoise/denoiser.h"
+#include "load/scene_loader.h"
 #include "tests/test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -160,6 +161,37 @@ TEST(Denoiser, KeepsTheTextureBehindGlass) {
     double meanGood = 0, meanRaw = 0;
     for (size_t i = 0; i < good.size(); ++i) meanGood += good[i], meanRaw += noisy.color[i];
     EXPECT_NEAR(meanGood / meanRaw, 1.0, 0.02);
+}
+
+// The filter's input does not depend on the image's scale: the Cornell box at 4 spp, scaled by
+// 2^EV for EV from -32 to 32 (--exposure's range), denoises to the same picture scaled, whose
+// mean is the raw mean's. OIDN's own scale ignored blocks darker than 1e-8: at -28 the denoised
+// mean was 11 times the raw one, at -32 176 times, the median 0.
+TEST(Denoiser, AnyExposureDenoisesToTheSamePicture) {
+    OPEN_DENOISER_OR_SKIP(denoiser);
+    Warnings warnings;
+    const Scene scene = loadScene(PT_SOURCE_DIR "/scenes/cornell_box.obj", warnings);
+    const int size = 64;
+    Features noisy = renderWithFeatures(scene, size, 4, 1);
+    auto denoisedAt = [&](int ev) {
+        std::vector<float> color = noisy.color;
+        for (float& v : color) v = std::ldexp(v, ev);
+        DenoiseImages images{size, size, &color, noisy.albedo, noisy.normal};
+        denoiser->denoise(images, DenoiseOptions{});
+        for (float& v : color) v = std::ldexp(v, -ev);
+        return color;
+    };
+    const std::vector<float> atZero = denoisedAt(0);
+    double raw = 0.0, zero = 0.0;
+    for (size_t i = 0; i < atZero.size(); ++i) raw += noisy.color[i], zero += atZero[i];
+    EXPECT_NEAR(zero / raw, 1.0, 0.03);
+    for (int ev : {-32, -28, -20, -8, 8, 20, 32}) {
+        const std::vector<float> d = denoisedAt(ev);
+        double mean = 0.0, change = 0.0;
+        for (size_t i = 0; i < d.size(); ++i) mean += d[i], change += std::abs(d[i] - atZero[i]);
+        EXPECT_NEAR(mean / raw, 1.0, 0.03) << "exposure " << ev << ": the denoised mean against the raw mean";
+        EXPECT_LT(change / zero, 1e-3) << "exposure " << ev << ": not the picture denoised at exposure 0, scaled";
+    }
 }
 
 // NaN, infinite and negative values are given 0 before the filter sees them, and counted; the

@@ -34,6 +34,7 @@ struct Denoiser::Api {
     oidn::SetSharedFilterImageFn setSharedFilterImage;
     oidn::SetFilterBoolFn setFilterBool;
     oidn::SetFilterIntFn setFilterInt;
+    oidn::SetFilterFloatFn setFilterFloat;
     oidn::CommitFilterFn commitFilter;
     oidn::ExecuteFilterFn executeFilter;
 };
@@ -94,6 +95,32 @@ size_t sanitize(DenoiseImages& images) {
     return replaced;
 }
 
+// The scale that brings the image to the brightness OIDN's HDR networks were trained at: a
+// log-average luminance of 0.18 over blocks of 16 x 16 pixels. OIDN's own (inputScale left NaN)
+// does the same but passes over blocks darker than 1e-8, so an image rendered at --exposure -28
+// or scaled by 1e-9 reached the network as black, and came back 5 to 180 times its brightness.
+// Here every block with light counts, in double: the filter's input is the same picture at any
+// scale, to float rounding.
+float inputScale(const std::vector<float>& color, size_t width, size_t height) {
+    constexpr size_t kBlock = 16;
+    double logSum = 0.0;
+    size_t blocks = 0;
+    for (size_t by = 0; by < height; by += kBlock)
+        for (size_t bx = 0; bx < width; bx += kBlock) {
+            double sum = 0.0;
+            const size_t y1 = std::min(by + kBlock, height), x1 = std::min(bx + kBlock, width);
+            for (size_t y = by; y < y1; ++y)
+                for (size_t x = bx; x < x1; ++x) {
+                    const float* p = &color[3 * (y * width + x)];
+                    sum += 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+                }
+            const double mean = sum / double((y1 - by) * (x1 - bx));
+            if (mean > 0.0 && std::isfinite(mean)) logSum += std::log2(mean), ++blocks;
+        }
+    if (blocks == 0) return 1.0f; // black: any scale gives black
+    return float(std::clamp(0.18 / std::exp2(logSum / double(blocks)), 1e-30, 1e30));
+}
+
 } // namespace
 
 std::unique_ptr<Denoiser> Denoiser::open(int threads, std::string& missing) {
@@ -116,6 +143,7 @@ std::unique_ptr<Denoiser> Denoiser::open(int threads, std::string& missing) {
     bind(handle, path, "oidnSetSharedFilterImage", a.setSharedFilterImage);
     bind(handle, path, "oidnSetFilterBool", a.setFilterBool);
     bind(handle, path, "oidnSetFilterInt", a.setFilterInt);
+    bind(handle, path, "oidnSetFilterFloat", a.setFilterFloat);
     bind(handle, path, "oidnCommitFilter", a.commitFilter);
     bind(handle, path, "oidnExecuteFilter", a.executeFilter);
 
@@ -156,6 +184,7 @@ DenoiseReport Denoiser::denoise(DenoiseImages& images, const DenoiseOptions& opt
     auto start = std::chrono::steady_clock::now();
     DenoiseReport report;
     report.replaced = sanitize(images);
+    const float scale = inputScale(*images.color, w, h);
     const DenoiseQuality quality = options.quality;
     const int q = quality == DenoiseQuality::High       ? oidn::kQualityHigh
                   : quality == DenoiseQuality::Balanced ? oidn::kQualityBalanced
@@ -190,6 +219,7 @@ DenoiseReport Denoiser::denoise(DenoiseImages& images, const DenoiseOptions& opt
             image("normal", images.normal);
             a.setFilterBool(filter.f, "hdr", true);
             a.setFilterBool(filter.f, "cleanAux", options.prefilter);
+            a.setFilterFloat(filter.f, "inputScale", scale);
         } else {
             image(feature == &images.albedo ? "albedo" : "normal", *feature);
         }

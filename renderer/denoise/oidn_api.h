@@ -38,6 +38,7 @@ using SetSharedFilterImageFn = void (*)(Filter, const char* name, void* data, Fo
                                         size_t byteOffset, size_t pixelByteStride, size_t rowByteStride);
 using SetFilterBoolFn = void (*)(Filter, const char*, bool);
 using SetFilterIntFn = void (*)(Filter, const char*, int);
+using SetFilterFloatFn = void (*)(Filter, const char*, float);
 using CommitFilterFn = void (*)(Filter);
 using ExecuteFilterFn = void (*)(Filter);
 
