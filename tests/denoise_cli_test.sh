@@ -21,6 +21,36 @@ PT_OIDN_LIBRARY=$tmp/none.so expect 2 "tools/install-oidn" "$pt" render "$scene"
 PT_OIDN_LIBRARY=$tmp/none.so expect 2 "which does not exist" "$pt" denoise "$tmp/x.exr" -o "$tmp/y.exr"
 libz=$(ldconfig -p | awk '/libz.so.1 /{print $NF; exit}')
 PT_OIDN_LIBRARY=$libz expect 1 "is not Intel Open Image Denoise 2.x" "$pt" render "$scene" "${small[@]}" --denoise -o "$tmp/x.exr"
+# A damaged library is refused with its name before dlopen, whose loader would otherwise touch
+# the missing bytes and die of SIGBUS: the library cut short, or whole beside a core or device
+# library cut short (laid out as tools/install-oidn lays them out, in a lib folder), a FIFO, a
+# loop of links. In each command that opens it.
+oidn=$root/.deps/oidn-2.5.1/lib
+if [[ -f $oidn/libOpenImageDenoise.so.2.5.1 ]]; then
+  for cut in main core device; do
+    mkdir -p "$tmp/$cut/lib"
+    cp "$oidn"/libOpenImageDenoise*.so.2.5.1 "$tmp/$cut/lib/"
+    ln -s libOpenImageDenoise.so.2.5.1 "$tmp/$cut/lib/libOpenImageDenoise.so.2"
+  done
+  truncate -s 62000 "$tmp/main/lib/libOpenImageDenoise.so.2.5.1"
+  truncate -s 4096 "$tmp/core/lib/libOpenImageDenoise_core.so.2.5.1"
+  truncate -s 4096 "$tmp/device/lib/libOpenImageDenoise_device_cpu.so.2.5.1"
+  mkfifo "$tmp/fifo.so"
+  ln -s loop_b.so "$tmp/loop_a.so"
+  ln -s loop_a.so "$tmp/loop_b.so"
+  "$pt" render "$scene" "${small[@]}" --aov albedo,normal -o "$tmp/lib_in.exr" >/dev/null
+  "$pt" render "$scene" "${small[@]}" --aov albedo,normal --samples 0:2 -o "$tmp/lib_part.exr" >/dev/null
+  for lib in main core device; do
+    file=$tmp/$lib/lib/libOpenImageDenoise.so.2
+    want="is damaged (cut short?)"
+    PT_OIDN_LIBRARY=$file expect 1 "$want" "$pt" render "$scene" "${small[@]}" --denoise -o "$tmp/lib_out.exr"
+    PT_OIDN_LIBRARY=$file expect 1 "$want" "$pt" denoise "$tmp/lib_in.exr" -o "$tmp/lib_out.exr"
+    PT_OIDN_LIBRARY=$file expect 1 "$want" "$pt" merge "$tmp/lib_part.exr" --denoise -o "$tmp/lib_out.exr"
+  done
+  PT_OIDN_LIBRARY=$tmp/fifo.so expect 1 "is not a regular file" timeout 20 "$pt" denoise "$tmp/lib_in.exr" -o "$tmp/lib_out.exr"
+  PT_OIDN_LIBRARY=$tmp/loop_a.so expect 1 "is a loop of symbolic links" "$pt" denoise "$tmp/lib_in.exr" -o "$tmp/lib_out.exr"
+  [[ -e $tmp/lib_out.exr ]] && { echo "FAIL: a refused library left $tmp/lib_out.exr"; failures=$((failures + 1)); }
+fi
 expect 2 "a part is denoised only once merged" "$pt" render "$scene" "${small[@]}" --denoise --samples 0:2 -o "$tmp/x.exr"
 
 if ! "$pt" render "$scene" "${small[@]}" --denoise -o "$tmp/d.exr" 2>"$tmp/err.txt"; then

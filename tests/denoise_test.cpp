@@ -214,5 +214,28 @@ TEST(Denoiser, NonFiniteValuesNeverReachTheFilter) {
     EXPECT_NEAR(color[3 * 1000], 0.5f, 0.02f);
 }
 
+// A filter that returns NaN (a stand-in library, tests/fake_oidn.cpp) is an error, never the image.
+TEST(Denoiser, AFilterThatReturnsNanIsAnError) {
+    const char* before = std::getenv("PT_OIDN_LIBRARY");
+    const std::string saved = before ? before : "";
+    setenv("PT_OIDN_LIBRARY", PT_FAKE_OIDN, 1);
+    std::string missing;
+    std::unique_ptr<Denoiser> d = Denoiser::open(1, missing);
+    if (before) setenv("PT_OIDN_LIBRARY", saved.c_str(), 1);
+    else unsetenv("PT_OIDN_LIBRARY");
+    ASSERT_TRUE(d) << missing;
+    const int size = 8;
+    std::vector<float> color(size * size * 3, 0.25f), albedo(color.size(), 0.5f), normal(color.size(), 0.0f);
+    const std::vector<float> original = color;
+    DenoiseImages images{size, size, &color, albedo, normal};
+    try {
+        d->denoise(images, DenoiseOptions{});
+        ADD_FAILURE() << "a filter's NaN output was taken for the image";
+    } catch (const DenoiseError& e) {
+        EXPECT_NE(std::string(e.what()).find("NaN or infinite values"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(color, original) << "the colour is left as it was";
+}
+
 } // namespace
 } // namespace pt::test

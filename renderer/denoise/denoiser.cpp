@@ -1,14 +1,18 @@
 #include "denoise/denoiser.h"
 
 #include "denoise/oidn_api.h"
+#include "denoise/shared_library.h"
 
 #include <dlfcn.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <string_view>
 
 #ifndef PT_OIDN_DEFAULT_DIR
 #define PT_OIDN_DEFAULT_DIR ""
@@ -45,9 +49,62 @@ constexpr const char* kSoname = "libOpenImageDenoise.so.2";
 constexpr const char* kInstall = "install it with tools/install-oidn (tools/install-deps runs it), or name the library "
                                  "file with PT_OIDN_LIBRARY=/path/to/libOpenImageDenoise.so.2";
 
+// Checks the library at `file`, and the OIDN libraries it brings with it from its folder (its
+// core, which it needs, and the device modules OIDN opens there), before any of them is loaded:
+// a damaged one would kill pt inside dlopen (shared_library.h). Throws DenoiseError naming it.
+void checkLibraryFiles(const std::string& file) {
+    namespace fs = std::filesystem;
+    const SharedLibraryInfo info = inspectSharedLibrary(file);
+    if (!info.error.empty()) throw DenoiseError(info.error + "; it cannot be loaded as Intel Open Image Denoise");
+    std::error_code ec;
+    const fs::path folder = fs::canonical(file, ec).parent_path();
+    if (ec) return;
+    std::vector<std::string> companions;
+    for (const std::string& n : info.needed)
+        if (n.rfind("libOpenImageDenoise", 0) == 0) companions.push_back((folder / n).string());
+    for (const fs::directory_entry& e : fs::directory_iterator(folder, ec))
+        if (e.path().filename().string().rfind("libOpenImageDenoise_device_", 0) == 0) companions.push_back(e.path().string());
+    for (const std::string& c : companions) {
+        if (!fs::exists(fs::symlink_status(c, ec))) continue; // not beside it: the loader looks elsewhere, and says so
+        const SharedLibraryInfo companion = inspectSharedLibrary(c);
+        if (!companion.error.empty())
+            throw DenoiseError(companion.error + "; Intel Open Image Denoise (" + file + ") loads it, so it cannot be used");
+    }
+}
+
+// Where the dynamic loader would find `soname` without a path: LD_LIBRARY_PATH, then the folders
+// of /etc/ld.so.conf.d and the system's own; "" if in none. pt checks and loads that file by its
+// path, so that what is checked is what is loaded.
+std::string findOnLibraryPath(const std::string& soname) {
+    namespace fs = std::filesystem;
+    std::vector<std::string> folders;
+    if (const char* env = std::getenv("LD_LIBRARY_PATH"))
+        for (std::string_view rest = env; !rest.empty();) {
+            const size_t colon = rest.find(':');
+            folders.emplace_back(rest.substr(0, colon));
+            rest = colon == std::string_view::npos ? std::string_view() : rest.substr(colon + 1);
+        }
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator("/etc/ld.so.conf.d", ec)) {
+        if (e.path().extension() != ".conf") continue;
+        std::ifstream conf(e.path());
+        for (std::string line; std::getline(conf, line);)
+            if (!line.empty() && line[0] == '/') folders.push_back(line.substr(0, line.find_first_of(" \t#")));
+    }
+    for (const char* f : {"/lib/x86_64-linux-gnu", "/usr/lib/x86_64-linux-gnu", "/lib64", "/usr/lib64", "/lib", "/usr/lib"})
+        folders.emplace_back(f);
+    for (const std::string& f : folders) {
+        if (f.empty()) continue;
+        const fs::path candidate = fs::path(f) / soname;
+        if (fs::exists(fs::symlink_status(candidate, ec))) return candidate.string();
+    }
+    return "";
+}
+
 // The library stays loaded for the life of the process: its thread pool may outlive a device.
 void* loadLibrary(std::string& path, std::string& missing) {
     auto load = [&](const std::string& file) -> void* {
+        checkLibraryFiles(file);
         void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (!handle) {
             const char* why = dlerror();
@@ -58,18 +115,22 @@ void* loadLibrary(std::string& path, std::string& missing) {
     };
     std::error_code ec;
     if (const char* named = std::getenv("PT_OIDN_LIBRARY"); named && *named) {
-        if (!std::filesystem::exists(named, ec)) {
+        // A name that leads nowhere is a library not installed (a usage matter); a link loop, a
+        // pipe or a damaged file is a library that is there and wrong (checkLibraryFiles).
+        if (!std::filesystem::exists(std::filesystem::symlink_status(named, ec))) {
             missing = std::string("PT_OIDN_LIBRARY names ") + named + ", which does not exist; " + kInstall;
+            return nullptr;
+        }
+        struct stat st {};
+        if (stat(named, &st) != 0 && errno == ENOENT) {
+            missing = std::string("PT_OIDN_LIBRARY names ") + named + ", a symbolic link to a file that does not exist; " + kInstall;
             return nullptr;
         }
         return load(named);
     }
     const std::string bundled = std::string(PT_OIDN_DEFAULT_DIR) + "/" + kSoname;
     if (*PT_OIDN_DEFAULT_DIR && std::filesystem::exists(bundled, ec)) return load(bundled);
-    if (void* handle = dlopen(kSoname, RTLD_NOW | RTLD_LOCAL)) {
-        path = kSoname;
-        return handle;
-    }
+    if (const std::string system = findOnLibraryPath(kSoname); !system.empty()) return load(system);
     missing = std::string("--denoise needs Intel Open Image Denoise 2.x, which was not found (looked for ") +
               (*PT_OIDN_DEFAULT_DIR ? bundled + " and " : std::string()) + kSoname +
               " on the library path; PT_OIDN_LIBRARY is not set); " + kInstall;
@@ -238,6 +299,12 @@ DenoiseReport Denoiser::denoise(DenoiseImages& images, const DenoiseOptions& opt
         images.normal.swap(out);
     }
     run("denoising the image", nullptr, true);
+    // A filter that fails inside without saying so (a damaged library, a CPU it mishandles) must
+    // not have its output taken for the image.
+    const size_t bad = size_t(std::count_if(out.begin(), out.end(), [](float v) { return !std::isfinite(v); }));
+    if (bad > 0)
+        throw DenoiseError("Intel Open Image Denoise " + version_ + " returned " + std::to_string(bad) +
+                           " NaN or infinite values of " + std::to_string(n) + "; the denoised image was not used");
     images.color->swap(out);
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     report.description = "OIDN " + version_ + " RT, quality " + qualityName(quality) + ", albedo and normal " +
