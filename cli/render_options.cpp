@@ -90,7 +90,8 @@ options (default in brackets):
                          from what was learnt, the share each region measured to pay (none
                          where it does not): for indirect light that next-event estimation
                          cannot aim at, such as a room lit by a bright patch of ceiling [off]
-  --guide-spp N          with --guide, samples per pixel spent learning, in [1, 1023]
+  --guide-spp N          with --guide, samples per pixel spent learning, in [1, 1023] and at
+                         most -spp
                          [the largest 2^k - 1 up to a quarter of -spp, at most 63]
   --denoise              denoise the image with Intel Open Image Denoise (its RT filter on
                          the CPU, guided by the albedo and normal, which are gathered through
@@ -326,6 +327,10 @@ RenderArgs parseRenderArgs(int argc, char** argv) {
         throw UsageError("--noise decides per pixel from all of its samples, which a --samples part does not see; "
                          "split an adaptive render with --crop (each crop adaptive over its own pixels)");
     if (r.guideSppGiven && !r.guide) throw UsageError("--guide-spp needs --guide");
+    // Training's passes are the image's first samples: one past -spp would be traced and thrown away.
+    if (r.guideSppGiven && r.settings.guideSpp > r.spp)
+        throw UsageError("--guide-spp " + std::to_string(r.settings.guideSpp) + " is above -spp " + std::to_string(r.spp) +
+                         ": training's passes are the image's first samples, so it can use at most -spp of them");
     if (r.guide && !r.guideSppGiven) {
         // Training passes draw half their directions from a guide still learning (dearer, and
         // noisier where guiding does not pay): a quarter of -spp at most.

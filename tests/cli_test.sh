@@ -50,6 +50,7 @@ expect 2 "--guide-spp needs --guide" "$pt" render "$scene" --guide-spp 3 -o "$tm
 expect 2 "option --guide-spp: 0 is out of range [1, 1023]" "$pt" render "$scene" --guide --guide-spp 0 -o "$tmp/out.exr"
 expect 2 "option --guide-spp: 2000 is out of range [1, 1023]" "$pt" render "$scene" --guide --guide-spp 2000 -o "$tmp/out.exr"
 expect 0 "guided (learnt from 3 spp" "$pt" render "$scene" --guide --guide-spp 3 -spp 4 --res 16x16 -o "$tmp/guided.exr"
+expect 2 "--guide-spp 1023 is above -spp 4" "$pt" render "$scene" --guide --guide-spp 1023 -spp 4 --res 16x16 -o "$tmp/guided.exr"
 # Where its regions learn that guiding does not pay, training stops after 7 of its 63 spp.
 expect 0 "guided (learnt from 7 spp, stopped there, guiding 0 % of bounces" \
   "$pt" render "$root/scenes/glass.obj" --guide --guide-spp 63 -spp 64 --res 64x64 -o "$tmp/guided.exr"

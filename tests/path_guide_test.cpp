@@ -324,6 +324,10 @@ TEST(PathGuide, CausticSceneAgreesAndIsDeterministic) {
     EXPECT_EQ(one.rays.camera, 16u * 32u * 24u);
     Rendered training = render(scene, 32, 24, 7, guided);
     EXPECT_EQ(training.rays.camera, 7u * 32u * 24u);
+    // Training beyond the job's samples would be traced and thrown away: it stops at -spp.
+    RenderSettings more = guided;
+    more.guideSpp = 1023;
+    EXPECT_EQ(render(scene, 32, 24, 4, more).rays.camera, 4u * 32u * 24u) << "training traced samples past -spp 4";
     expectSameImage(training, reference, "glass, training passes only");
 }
 

@@ -65,7 +65,7 @@ Renderer::Renderer(const Scene& scene, const Accel& accel, const Camera& camera,
     : scene_(scene), accel_(accel), settings_(settings), triangles_(buildShadingTriangles(scene)), tangents_(buildCornerTangents(scene)),
       lights_(scene, settings.lightChoice), camera_(camera, width, height),
       tracer_(scene, triangles_, tangents_, accel, lights_, settings_, pixelSpread(camera, height, spp)),
-      width_(width), height_(height), window_(window.empty() ? PixelWindow{0, 0, width, height} : window) {}
+      spp_(spp), width_(width), height_(height), window_(window.empty() ? PixelWindow{0, 0, width, height} : window) {}
 
 RayCounts Renderer::renderSamples(Film& film, uint32_t first, uint32_t last, RenderProgress* progress,
                                   const std::vector<uint32_t>* startAt) const {
@@ -91,7 +91,9 @@ RayCounts Renderer::trainGuide(Film* film, uint32_t keepFirst, uint32_t keepLast
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     uint32_t first = 0;
     double lastPass = 0.0;
-    for (uint32_t size = 1, k = 0; first + size <= settings_.guideSpp; first += size, size *= 2, ++k) {
+    // Training's passes are the image's first samples: none past the job's spp, which no part keeps.
+    const uint32_t trainable = std::min(settings_.guideSpp, spp_);
+    for (uint32_t size = 1, k = 0; first + size <= trainable; first += size, size *= 2, ++k) {
         if (progress && progress->cancel.load()) break;
         if (seconds > 0.0 && elapsed() + 2.0 * lastPass > seconds) break; // the next pass is twice the last
         const double passStart = elapsed();
@@ -112,7 +114,7 @@ RayCounts Renderer::trainGuide(Film* film, uint32_t keepFirst, uint32_t keepLast
         guideSppTrained_ = first + size;
         // Training that its own measure says guides almost nothing is stopped: the rest of the
         // render's samples are cheaper unguided.
-        if (first + 3 * size <= settings_.guideSpp && guideSppTrained_ >= kGuideMinTrainingSpp &&
+        if (first + 3 * size <= trainable && guideSppTrained_ >= kGuideMinTrainingSpp &&
             guide_->guidedFraction() < kGuideStopBelow) {
             guideSettled_ = true;
             break;

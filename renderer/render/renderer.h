@@ -53,7 +53,7 @@ public:
 
     // --guide: learns the path guide in passes of 1, 2, 4, ... samples per pixel of the whole
     // image (a crop's too, so that every part of a job learns the same guide), until
-    // settings.guideSpp are spent; the render's later samples are then guided by it. The passes
+    // settings.guideSpp (at most the job's spp) are spent; the render's later samples are then guided by it. The passes
     // are the image's first samples: those in [keepFirst, keepLast) of the window's pixels (from a
     // pixel's `startAt` entry on, when given) go into `film`. Each pass draws under a seed of its
     // own, so that its samples are independent of the guide they are drawn by. Deterministic.
@@ -106,6 +106,7 @@ private:
     std::unique_ptr<PathGuide> guide_; // --guide
     uint32_t guideSppTrained_ = 0;
     bool guideSettled_ = false;
+    uint32_t spp_; // the job's samples per pixel, all parts together
     int width_, height_;
     PixelWindow window_;
 };
