@@ -74,6 +74,10 @@ expect 0 "relative MSE 0," "$pt" diff "$tmp/da.exr" "$tmp/raw.exr"
 
 # pt denoise: from the feature layers; again from a denoised file's raw estimate, to the same picture.
 expect 0 "pt denoise: 48x36" "$pt" denoise "$tmp/raw.exr" -o "$tmp/pd.exr"
+# Its metadata is written back with the types it was read with: OpenImageIO's debug output (on
+# wherever OPENIMAGEIO_DEBUG is set) said OpenEXR threw on every pt denoise before.
+OPENIMAGEIO_DEBUG=1 "$pt" denoise "$tmp/raw.exr" -o "$tmp/pd_debug.exr" >/dev/null 2>"$tmp/debug.txt"
+grep -q "OIIO DEBUG" "$tmp/debug.txt" && { echo "FAIL: pt denoise made OpenImageIO complain: $(head -2 "$tmp/debug.txt")"; failures=$((failures + 1)); }
 expect 0 "was denoised already" "$pt" denoise "$tmp/pd.exr" -o "$tmp/pd2.exr"
 expect 0 "relative MSE 0," "$pt" diff "$tmp/pd.exr" "$tmp/da.exr"
 python3 "$root/tests/compare_exact.py" "$tmp/pd.exr" "$tmp/pd2.exr" >/dev/null 2>&1 ||

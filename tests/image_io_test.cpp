@@ -1,9 +1,11 @@
 #include "image/image_input.h"
 #include "image/image_io.h"
 
+#include <OpenImageIO/deepdata.h>
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -75,6 +77,87 @@ TEST(ImageIo, ChannelsAreReadByName) {
     EXPECT_EQ(rg.beauty, Image::Beauty::Missing);
     EXPECT_EQ(missingRgb(rg), "R and G but no B (its channels: R, G, albedo.R)");
     EXPECT_EQ(rg.rgb, std::vector<float>(6, 0.0f)) << "no channel stands in for B";
+}
+
+// A file whose header declares more pixels than its chunks hold (its data window widened by 32
+// pixels, the data left as it was) is damaged, not an image with zeros where the rest would be:
+// OpenEXR read uncompressed, RLE and ZIP chunks so without a word.
+TEST(ImageIo, AnExrHoldingFewerPixelsThanItsHeaderDeclaresIsRefused) {
+    const std::string dir = fs::path(::testing::TempDir()).string();
+    for (const char* compression : {"none", "rle", "zips", "zip"}) {
+        const std::string path = dir + "/pt_wide_" + compression + ".exr";
+        {
+            std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
+            OIIO::ImageSpec spec(32, 20, 3, OIIO::TypeDesc::FLOAT);
+            spec.attribute("compression", compression);
+            std::vector<float> px(32 * 20 * 3);
+            for (size_t i = 0; i < px.size(); ++i) px[i] = 0.001f * float(i % 997) + 0.25f;
+            ASSERT_TRUE(out && out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, px.data()) && out->close());
+        }
+        Image intact;
+        ASSERT_EQ(readImage(path, intact), "") << compression;
+        std::string bytes = [&] {
+            std::ifstream in(path, std::ios::binary);
+            return std::string(std::istreambuf_iterator<char>(in), {});
+        }();
+        const std::string key = std::string("dataWindow") + '\0' + "box2i" + '\0';
+        const size_t at = bytes.find(key);
+        ASSERT_NE(at, std::string::npos);
+        int32_t x1;
+        std::memcpy(&x1, &bytes[at + key.size() + 4 + 8], 4);
+        x1 += 32;
+        std::memcpy(&bytes[at + key.size() + 4 + 8], &x1, 4);
+        std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+        Image wide;
+        const std::string error = readImage(path, wide);
+        EXPECT_NE(error, "") << compression; // OpenEXR's decoders catch some short RLE and ZIPS data themselves
+        if (std::string(compression) == "none" || std::string(compression) == "zip")
+            EXPECT_NE(error.find("bytes of pixels where its header declares"), std::string::npos) << compression << ": " << error;
+        EXPECT_EQ(wide.width, 0) << compression << ": nothing of the damaged file is kept";
+    }
+}
+
+TEST(ImageIo, ADeepExrIsRefusedByName) {
+    const std::string path = (fs::path(::testing::TempDir()) / "pt_deep.exr").string();
+    {
+        std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
+        OIIO::ImageSpec spec(2, 2, 4, OIIO::TypeDesc::FLOAT);
+        spec.channelnames = {"R", "G", "B", "Z"};
+        spec.deep = true;
+        OIIO::DeepData deep(spec);
+        for (int p = 0; p < 4; ++p) deep.set_samples(p, 1);
+        ASSERT_TRUE(out && out->open(path, spec) && out->write_deep_image(deep) && out->close()) << OIIO::geterror();
+    }
+    Image image;
+    EXPECT_NE(readImage(path, image).find("it is a deep OpenEXR image"), std::string::npos);
+}
+
+// Attributes keep their types through a read and a write (as pt denoise does): a matrix and a
+// v2f come back as they were, never as strings (a string written under screenWindowCenter, a v2f
+// to OpenEXR, made it throw in every pt denoise).
+TEST(ImageIo, AttributesOfAnyTypeRoundTrip) {
+    const std::string dir = fs::path(::testing::TempDir()).string();
+    Image img;
+    img.width = img.height = 1;
+    img.rgb = {0.5f, 0.5f, 0.5f};
+    ImageAttribute m{"worldToCamera", ImageAttribute::Type::Other, "matrix"};
+    for (int i = 0; i < 16; ++i) {
+        const float v = float(i) + 0.5f;
+        const auto* b = reinterpret_cast<const unsigned char*>(&v);
+        m.bytes.insert(m.bytes.end(), b, b + 4);
+    }
+    img.metadata.push_back(m);
+    ASSERT_EQ(writeImage(dir + "/pt_attrs.exr", img), "");
+    Image once, twice;
+    ASSERT_EQ(readImage(dir + "/pt_attrs.exr", once), "");
+    ASSERT_EQ(writeImage(dir + "/pt_attrs2.exr", once), "");
+    ASSERT_EQ(readImage(dir + "/pt_attrs2.exr", twice), "");
+    for (const char* name : {"worldToCamera", "screenWindowCenter"}) {
+        auto it = std::find_if(twice.metadata.begin(), twice.metadata.end(), [&](const ImageAttribute& a) { return a.name == name; });
+        ASSERT_NE(it, twice.metadata.end()) << name;
+        EXPECT_EQ(it->type, ImageAttribute::Type::Other) << name << " came back as " << it->asText();
+        if (it->name == m.name) EXPECT_EQ(it->bytes, m.bytes);
+    }
 }
 
 TEST(ImageIo, PngIsSrgbEncoded) {

@@ -1,7 +1,10 @@
 #include "image/exr_header.h"
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <cstring>
+#include <vector>
 
 namespace pt {
 namespace {
@@ -70,9 +73,10 @@ bool valueReadAsDeclared(const std::string& type, const unsigned char* v, int64_
 // One header's facts, as far as the chunk table and a chunk's size go.
 struct PartHeader {
     bool haveWindow = false, haveTiles = false, haveChunkCount = false;
+    bool subsampled = false;   // a channel sampled at other than every pixel
     int64_t bytesPerPixel = 0; // of every channel in chlist, uncompressed
     int64_t x0 = 0, y0 = 0, x1 = -1, y1 = -1, tileX = 1, tileY = 1, chunkCount = 0;
-    int compression = 0;
+    int compression = 0, levelMode = 0; // tiles: 0 one level, 1 mipmaps, 2 ripmaps
 };
 
 // Walks one header from `at` to its closing NUL (consumed), as OpenEXR reads it.
@@ -102,13 +106,14 @@ std::string readHeader(const unsigned char* head, size_t size, size_t maxName, s
         else if (name == "compression" && type == "compression")
             h.compression = v[0];
         else if (name == "tiles" && type == "tiledesc")
-            h.tileX = uint32_t(int32At(v)), h.tileY = uint32_t(int32At(v + 4)), h.haveTiles = true;
+            h.tileX = uint32_t(int32At(v)), h.tileY = uint32_t(int32At(v + 4)), h.levelMode = v[8] & 0x0f, h.haveTiles = true;
         else if (name == "chunkCount" && type == "int")
             h.chunkCount = int32At(v), h.haveChunkCount = true;
         else if (name == "channels" && type == "chlist")
             for (size_t c = 0; v[c] != 0;) {
                 c = size_t(static_cast<const unsigned char*>(std::memchr(v + c, 0, size_t(length) - c)) - v) + 1;
                 h.bytesPerPixel += int32At(v + c) == 1 ? 2 : 4; // half, or uint and float
+                h.subsampled |= int32At(v + c + 8) != 1 || int32At(v + c + 12) != 1;
                 c += 16;
             }
         at += size_t(length);
@@ -143,6 +148,7 @@ std::string chunksOf(const PartHeader& h, bool tiled, int64_t& chunks) {
 
 std::string checkExrHeader(const unsigned char* head, size_t size, uint64_t fileSize) {
     if (size < 8) return "its OpenEXR header is cut short";
+    if (head[5] & 0x08) return "it is a deep OpenEXR image (a varying number of samples a pixel); pt reads flat images only";
     const bool tiled = head[5] & 0x02, longNames = head[5] & 0x04, multipart = head[5] & 0x10;
     const size_t maxName = longNames ? 256 : 32;
     size_t at = 8;
@@ -160,6 +166,101 @@ std::string checkExrHeader(const unsigned char* head, size_t size, uint64_t file
         // A multipart file ends its list of headers with an empty one.
         if (!multipart || (at < size && head[at] == 0)) break;
         if (part >= 1024) return "its OpenEXR file declares more than 1024 parts";
+    }
+    return "";
+}
+
+namespace {
+
+// The bytes OpenEXR's RLE data unpacks to (its rleUncompress), or -1 where it runs past its end.
+int64_t rleUnpackedSize(const unsigned char* in, int64_t length) {
+    int64_t out = 0;
+    while (length > 0) {
+        const int count = int(static_cast<signed char>(*in));
+        if (count < 0) {
+            if (length < 1 - count) return -1;
+            out += -count, in += 1 - count, length -= 1 - count;
+        } else {
+            if (length < 2) return -1;
+            out += count + 1, in += 2, length -= 2;
+        }
+    }
+    return out;
+}
+
+// The bytes zlib data unpacks to, counted up to `limit` + 1; -1 if it is not zlib data.
+int64_t zipUnpackedSize(const unsigned char* in, int64_t length, int64_t limit, std::vector<unsigned char>& buffer) {
+    buffer.resize(size_t(std::min<int64_t>(limit + 1, int64_t(1) << 20)));
+    z_stream z{};
+    if (inflateInit(&z) != Z_OK) return -1;
+    z.next_in = const_cast<unsigned char*>(in);
+    z.avail_in = uInt(length);
+    int64_t out = 0;
+    int status = Z_OK;
+    while (status == Z_OK && out <= limit) {
+        z.next_out = buffer.data();
+        z.avail_out = uInt(buffer.size());
+        status = inflate(&z, Z_NO_FLUSH);
+        out += int64_t(buffer.size() - z.avail_out);
+        if (status == Z_BUF_ERROR && z.avail_in == 0) break; // the input ended before the stream did
+    }
+    inflateEnd(&z);
+    return status == Z_STREAM_END || status == Z_OK ? out : -1;
+}
+
+} // namespace
+
+std::string checkExrChunks(const unsigned char* data, size_t size) {
+    if (size < 8 || (data[5] & 0x10)) return ""; // multipart: each part's reader checks what it reads
+    const bool tiled = data[5] & 0x02;
+    size_t at = 8;
+    PartHeader h;
+    if (std::string error = readHeader(data, size, data[5] & 0x04 ? 256 : 32, at, h); !error.empty()) return error;
+    int64_t chunks = 0;
+    if (std::string error = chunksOf(h, tiled, chunks); !error.empty()) return error;
+    if (h.subsampled || (tiled && (!h.haveTiles || h.levelMode != 0 || h.tileX <= 0 || h.tileY <= 0)))
+        return ""; // sizes pt does not work out; OpenEXR reads them as it can
+    const int64_t width = h.x1 - h.x0 + 1, height = h.y1 - h.y0 + 1;
+    const int64_t lines = linesPerChunk(h.compression);
+    const int64_t tilesX = tiled ? (width + h.tileX - 1) / h.tileX : 1;
+    if (uint64_t(at) + uint64_t(chunks) * 8 > size) return "its OpenEXR table of chunk offsets is cut short";
+    std::vector<unsigned char> buffer;
+    for (int64_t k = 0; k < chunks; ++k) {
+        uint64_t offset = 0;
+        for (int b = 7; b >= 0; --b) offset = offset << 8 | data[at + size_t(8 * k + b)];
+        // Where the chunk lies and how many bytes its pixels take unpacked.
+        int64_t unpacked = 0, headerBytes = 0;
+        bool placed = false;
+        if (tiled) {
+            const int64_t tx = k % tilesX, ty = k / tilesX;
+            unpacked = std::min(h.tileX, width - tx * h.tileX) * std::min(h.tileY, height - ty * h.tileY) * h.bytesPerPixel;
+            headerBytes = 20; // tile x, y, level x, y, data size
+            placed = offset <= size - std::min<uint64_t>(size, 20) && int32At(data + offset) == tx &&
+                     int32At(data + offset + 4) == ty && int32At(data + offset + 8) == 0 && int32At(data + offset + 12) == 0;
+        } else {
+            const int64_t y = h.y0 + k * lines;
+            unpacked = std::min(lines, h.y1 - y + 1) * width * h.bytesPerPixel;
+            headerBytes = 8; // first scanline, data size
+            placed = offset <= size - std::min<uint64_t>(size, 8) && int32At(data + offset) == y;
+        }
+        const std::string which = "its OpenEXR chunk " + std::to_string(k) + " of " + std::to_string(chunks);
+        if (!placed || offset < at + uint64_t(chunks) * 8)
+            return which + " is not where its table of offsets says (the file is damaged or cut short)";
+        const int64_t length = int32At(data + offset + uint64_t(headerBytes) - 4);
+        if (length < 0 || uint64_t(length) > size - offset - uint64_t(headerBytes))
+            return which + " runs past the end of the file (cut short?)";
+        if (length > unpacked)
+            return which + " holds " + std::to_string(length) + " bytes, more than the " + std::to_string(unpacked) +
+                   " of the pixels its header declares";
+        if (length == unpacked) continue; // stored as it is (OpenEXR does so where packing gains nothing)
+        const unsigned char* packed = data + offset + headerBytes;
+        int64_t got = unpacked; // compressions whose decoders check the size themselves
+        if (h.compression == 0) got = length;
+        else if (h.compression == 1) got = rleUnpackedSize(packed, length);
+        else if (h.compression == 2 || h.compression == 3) got = zipUnpackedSize(packed, length, unpacked, buffer);
+        if (got != unpacked)
+            return which + " holds " + (got < 0 ? std::string("damaged data") : std::to_string(got) + " bytes of pixels") +
+                   " where its header declares " + std::to_string(unpacked) + " (a data window larger than the file holds?)";
     }
     return "";
 }

@@ -6,7 +6,8 @@
 // whose sides or chunks are larger than any image pt reads. Every attribute of every header (of
 // each part, for a multipart file) must fill exactly the size it declares: OpenEXR reads many
 // types by their contents, so a value that disagrees sends it elsewhere in the header, where a
-// size of 1.4 GB was allocated from a 2 KB file (found by the part fuzzer).
+// size of 1.4 GB was allocated from a 2 KB file (found by the part fuzzer). Deep images (several
+// samples a pixel) are refused by name: pt reads flat ones.
 #pragma once
 
 #include <cstddef>
@@ -18,6 +19,15 @@ namespace pt {
 // `head`: the file's first bytes (at least the whole header, or all of a smaller file), `size`
 // their number, `fileSize` the whole file's. Returns "" or what is wrong.
 std::string checkExrHeader(const unsigned char* head, size_t size, uint64_t fileSize);
+
+// After OpenEXR has read a file's pixels: whether every chunk of the first part holds the pixels
+// its header declares. OpenEXR's own reader takes a chunk that holds fewer (a data window
+// widened in the header, a file patched or cut short) and gives the missing pixels as zeros
+// without a word, for uncompressed, RLE and ZIP chunks. Each chunk's offset, its place in the
+// image and its size are checked, and RLE and ZIP data are unpacked to count what they hold;
+// the other compressions' decoders report a short chunk themselves. `data`: the whole file.
+// Returns "" or what is wrong.
+std::string checkExrChunks(const unsigned char* data, size_t size);
 
 // How many first bytes checkExrHeader needs at most: a longer header is refused.
 inline constexpr size_t kMaxExrHeaderBytes = size_t(1) << 20;

@@ -1,6 +1,8 @@
 #include "image/image_io.h"
 
+#include "image/exr_header.h"
 #include "image/image_input.h"
+#include "io/input_file.h"
 
 #include "core/color.h"
 #include "core/system.h"
@@ -50,6 +52,7 @@ std::string ImageAttribute::asText() const {
         return buf;
     }
     case Type::String: break;
+    case Type::Other: return "(" + text + ")";
     }
     return text;
 }
@@ -60,6 +63,12 @@ static void addAttributes(OIIO::ImageSpec& spec, const Image& image) {
         case ImageAttribute::Type::Int: spec.attribute(a.name, int(a.integer)); break;
         case ImageAttribute::Type::Float: spec.attribute(a.name, float(a.number)); break;
         case ImageAttribute::Type::String: spec.attribute(a.name, a.text); break;
+        case ImageAttribute::Type::Other: {
+            const OIIO::TypeDesc type(a.text);
+            if (type.basetype != OIIO::TypeDesc::UNKNOWN && type.size() == a.bytes.size())
+                spec.attribute(a.name, type, a.bytes.data());
+            break;
+        }
         }
     }
 }
@@ -223,10 +232,21 @@ static std::string decodeImage(OIIO::ImageInput* in, const std::string& path, Im
             for (size_t c = 0; c < chans.size(); ++c) layer.pixels[i * chans.size() + c] = pixels[i * nc + chans[c].second];
         image.layers.push_back(std::move(layer));
     }
-    for (const auto& attr : spec.extra_attribs)
-        if (attr.type() == OIIO::TypeDesc::INT) image.metadata.push_back(ImageAttribute::integerValue(attr.name().string(), attr.get_int()));
-        else if (attr.type() == OIIO::TypeDesc::FLOAT) image.metadata.push_back(ImageAttribute::floatValue(attr.name().string(), attr.get_float()));
-        else image.metadata.push_back(ImageAttribute::string(attr.name().string(), attr.get_string()));
+    // Every attribute with its own type: a v2f read as the string "0 0" and written back under
+    // its name made OpenEXR throw (screenWindowCenter, in every pt denoise).
+    for (const auto& attr : spec.extra_attribs) {
+        const std::string name = attr.name().string();
+        if (name.rfind("oiio:", 0) == 0 && name != "oiio:ColorSpace") continue; // the reader's facts (subimages), not the file's
+        if (attr.type() == OIIO::TypeDesc::INT) image.metadata.push_back(ImageAttribute::integerValue(name, attr.get_int()));
+        else if (attr.type() == OIIO::TypeDesc::FLOAT) image.metadata.push_back(ImageAttribute::floatValue(name, attr.get_float()));
+        else if (attr.type() == OIIO::TypeDesc::STRING) image.metadata.push_back(ImageAttribute::string(name, attr.get_string()));
+        else {
+            ImageAttribute a{name, ImageAttribute::Type::Other, attr.type().c_str()};
+            const auto* data = static_cast<const unsigned char*>(attr.data());
+            a.bytes.assign(data, data + attr.type().size() * size_t(attr.nvalues()));
+            image.metadata.push_back(std::move(a));
+        }
+    }
     return "";
 }
 
@@ -235,10 +255,35 @@ std::string readImage(const std::string& path, Image& image) {
     if (stat(path.c_str(), &st) != 0) return "cannot read \"" + path + "\": " + std::strerror(errno);
     if (S_ISDIR(st.st_mode)) return "cannot read \"" + path + "\": it is a folder, not an image";
     if (!S_ISREG(st.st_mode)) return "cannot read \"" + path + "\": not a regular file (a device or pipe?)";
+    const double budget = 0.5 * physicalMemoryBytes();
+    // An EXR is read whole, so that its chunks can be checked against its header after OpenEXR
+    // has read them (checkExrChunks); its file is no larger than its pixels, which the budget
+    // bounds.
+    if (imageFormatOfFile(path) == "openexr") {
+        std::vector<unsigned char> bytes;
+        if (std::string error = readRegularFile(path, uint64_t(budget), bytes); !error.empty())
+            return "cannot read \"" + path + "\": " + error;
+        return readImageFromMemory(bytes, path, image, budget);
+    }
     std::string error;
     auto in = openImageFile(path, error);
     if (!in) return "cannot read \"" + path + "\": " + error;
-    return decodeImage(in.get(), path, image, 0.5 * physicalMemoryBytes());
+    return decodeImage(in.get(), path, image, budget);
+}
+
+std::string readImageFromMemory(const std::vector<unsigned char>& bytes, const std::string& name, Image& image,
+                                double budgetBytes) {
+    MemoryImageReader reader(bytes);
+    std::string error;
+    auto in = openImageMemory(bytes, reader, name, error);
+    if (!in) return "cannot read \"" + name + "\": " + error;
+    if (error = decodeImage(in.get(), name, image, budgetBytes); !error.empty()) return error;
+    if (std::string(in->format_name()) == "openexr")
+        if (error = checkExrChunks(bytes.data(), bytes.size()); !error.empty()) {
+            image = Image{};
+            return "cannot read \"" + name + "\": " + error;
+        }
+    return "";
 }
 
 std::string missingRgb(const Image& image) {
@@ -255,13 +300,5 @@ std::string missingRgb(const Image& image) {
     return (have.empty() ? "no R, G or B channel" : have + " but no " + lacks) + " (its channels: " + channels + ")";
 }
 
-std::string readImageFromMemory(const std::vector<unsigned char>& bytes, const std::string& name, Image& image,
-                                double budgetBytes) {
-    MemoryImageReader reader(bytes);
-    std::string error;
-    auto in = openImageMemory(bytes, reader, name, error);
-    if (!in) return "cannot read \"" + name + "\": " + error;
-    return decodeImage(in.get(), name, image, budgetBytes);
-}
 
 } // namespace pt

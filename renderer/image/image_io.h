@@ -19,12 +19,15 @@ struct ImageLayer {
 
 // One metadata attribute, written with its type (EXR keeps ints, floats and strings apart).
 struct ImageAttribute {
-    enum class Type { String, Int, Float };
+    // Other: any other type a file holds (a v2f, a matrix), kept as its OpenImageIO type name
+    // and bytes, so that it is written back as it was read.
+    enum class Type { String, Int, Float, Other };
     std::string name;
     Type type = Type::String;
-    std::string text;
+    std::string text;  // String; Other: the type's name ("float2", "matrix")
     long long integer = 0;
     double number = 0.0;
+    std::vector<unsigned char> bytes; // Other
 
     static ImageAttribute string(std::string n, std::string v) { return {std::move(n), Type::String, std::move(v)}; }
     static ImageAttribute integerValue(std::string n, long long v) { return {std::move(n), Type::Int, {}, v}; }
