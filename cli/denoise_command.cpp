@@ -109,7 +109,8 @@ int denoiseCommand(int argc, char** argv) {
         silenceLibraryOutput();
         err = errorStream();
     }
-    installStopHandlers("pt denoise: interrupted; nothing was written\n");
+    installStopHandlers("pt denoise: interrupted; nothing was written\n",
+                        "pt denoise: interrupted after the denoised image was written whole\n");
     const int hardware = tbb::info::default_concurrency();
     threads = threads > 0 ? std::min(threads, hardware) : hardware;
     int status = 0;

@@ -112,7 +112,8 @@ int mergeCommand(int argc, char** argv) {
     }
     // Reading and writing are quick to do again: a signal quits at once, and removes the
     // temporary output file if it is being written.
-    installStopHandlers("pt merge: interrupted; nothing was written\n");
+    installStopHandlers("pt merge: interrupted; nothing was written\n",
+                        "pt merge: interrupted after the merged image was written whole\n");
     std::unique_ptr<Denoiser> denoiser;
     if (denoise) {
         int status = 0;

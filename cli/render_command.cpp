@@ -77,7 +77,8 @@ int renderCommand(int argc, char** argv) {
     RenderProgress progress;
     // Until the render starts a signal quits at once (there is nothing to keep); from then on it
     // stops the render, whose finished samples are written.
-    installStopHandlers("pt: interrupted before rendering began; nothing was written\n");
+    installStopHandlers("pt: interrupted before rendering began; nothing was written\n",
+                        "pt: interrupted after the image was written whole\n");
 
     auto t0 = std::chrono::steady_clock::now();
     Scene scene;

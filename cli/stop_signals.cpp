@@ -13,6 +13,7 @@ namespace {
 static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<std::atomic<bool>*>::is_always_lock_free);
 std::atomic<std::atomic<bool>*> gCancel{nullptr};
 const char* gQuitMessage = "";
+const char* gWrittenMessage = "";
 volatile std::sig_atomic_t gSignal = 0;
 
 void say(const char* text) {
@@ -28,14 +29,16 @@ extern "C" void onStopSignal(int sig) {
         return;
     }
     removeTemporaryOutputs();
-    say(gSignal != 0 ? "pt: second signal: stopped at once; no output file was written or left behind\n" : gQuitMessage);
+    if (committedOutputs() > 0) say(gWrittenMessage);
+    else say(gSignal != 0 ? "pt: second signal: stopped at once; no output file was written or left behind\n" : gQuitMessage);
     _exit(128 + sig);
 }
 
 } // namespace
 
-void installStopHandlers(const char* quitMessage) {
+void installStopHandlers(const char* quitMessage, const char* writtenMessage) {
     gQuitMessage = quitMessage;
+    gWrittenMessage = writtenMessage;
     struct sigaction sa {};
     sa.sa_handler = onStopSignal;
     sigemptyset(&sa.sa_mask);

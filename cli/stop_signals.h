@@ -11,8 +11,10 @@
 namespace pt::cli {
 
 // Installs the handlers (a signal the parent ignores stays ignored, as for a background job).
-// `quitMessage` is printed when the process quits at once; it must outlive the process.
-void installStopHandlers(const char* quitMessage);
+// `quitMessage` is printed when the process quits at once with nothing written, `writtenMessage`
+// when it quits after its output was put in place (a signal in the last moments of a command);
+// both must outlive the process.
+void installStopHandlers(const char* quitMessage, const char* writtenMessage);
 
 // While `cancel` is set, the first signal stores true into it instead of quitting; nullptr: quit.
 void setStopTarget(std::atomic<bool>* cancel);

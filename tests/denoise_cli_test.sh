@@ -117,6 +117,34 @@ expect 1 "is a part of a split render" "$pt" denoise "$tmp/p0.exr" -o "$tmp/y.ex
 "$pt" render "$scene" "${small[@]}" --samples 0:2 -o "$tmp/q0.exr" >/dev/null
 expect 1 "has no first-hit sums; --denoise" "$pt" merge "$tmp/q0.exr" --denoise -o "$tmp/y.exr"
 
+# A signal at any moment of pt denoise: what it prints is what happened. OUT holds an old file;
+# "nothing was written" must leave it, and a replaced OUT must be said to be written whole
+# (before, 3 in 60 signals in the last ~20 ms replaced OUT and said nothing was written).
+# SIGTERM: a background job's SIGINT is ignored. The signals fall from 0.6 to 1.1 times the
+# shortest of three whole runs after the start, where the output is written.
+took=999999999 # microseconds
+for i in 1 2 3; do
+  start=$(date +%s%N)
+  "$pt" denoise "$tmp/raw.exr" -o "$tmp/sig.exr" -q >/dev/null
+  t=$((($(date +%s%N) - start) / 1000))
+  ((t < took)) && took=$t
+done
+lies=0
+for i in $(seq 1 40); do
+  echo old >"$tmp/sig.exr"
+  "$pt" denoise "$tmp/raw.exr" -o "$tmp/sig.exr" -q >/dev/null 2>"$tmp/sig.txt" &
+  pid=$!
+  sleep "$(awk -v t="$took" -v i="$i" 'BEGIN { printf "%.6f", t * (0.6 + 0.5 * i / 40) / 1e6 }')"
+  kill -TERM $pid 2>/dev/null
+  wait $pid
+  status=$?
+  replaced=$([[ $(head -c 3 "$tmp/sig.exr") == old ]] && echo no || echo yes)
+  if grep -q "nothing was written" "$tmp/sig.txt" && [[ $replaced == yes ]]; then lies=$((lies + 1)); fi
+  if grep -q "written whole" "$tmp/sig.txt" && [[ $replaced == no ]]; then lies=$((lies + 1)); fi
+  if [[ $status -eq 0 && $replaced == no ]]; then lies=$((lies + 1)); fi
+done
+[[ $lies -eq 0 ]] || { echo "FAIL: $lies of 40 interrupted pt denoise runs said other than what they did"; failures=$((failures + 1)); }
+
 # An interrupted --denoise render writes its raw partial, never a denoised one.
 "$pt" render "$scene" -spp 100000 --res 256x256 --threads 1 --denoise -q -o "$tmp/long.exr" &
 pid=$!

@@ -6,7 +6,9 @@
 #include <cerrno>
 #include <climits>
 #include <cstring>
+#include <csignal>
 #include <fcntl.h>
+#include <pthread.h>
 #include <filesystem>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -23,6 +25,7 @@ constexpr int kSlots = 8;
 enum SlotState : int { kFree, kClaimed, kReady };
 char gTempNames[kSlots][PATH_MAX];
 std::atomic<int> gTempState[kSlots];
+std::atomic<int> gCommitted{0}; // outputs renamed into place
 
 int registerTemp(const std::string& name) {
     if (name.size() >= PATH_MAX) return -1;
@@ -48,6 +51,8 @@ std::string folderOf(const std::string& path) {
 std::string errnoText() { return std::strerror(errno); }
 
 } // namespace
+
+int committedOutputs() { return gCommitted.load(); }
 
 void removeTemporaryOutputs() {
     for (int i = 0; i < kSlots; ++i)
@@ -170,10 +175,25 @@ std::string OutputFile::commit(const void* data, size_t size) {
     int fd = fd_;
     fd_ = -1;
     if (::close(fd) != 0) return failed("close");
-    if (rename(temp_.c_str(), target_.c_str()) != 0) return failed("rename");
-    unregisterTemp(slot_);
-    slot_ = -1;
-    temp_.clear();
+    // The rename and the count of committed outputs, with no signal between them: a handler
+    // then says whether the output was written (committedOutputs) and never that it was not
+    // after it was.
+    sigset_t stop, before;
+    sigemptyset(&stop);
+    sigaddset(&stop, SIGINT);
+    sigaddset(&stop, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &stop, &before);
+    const bool renamed = rename(temp_.c_str(), target_.c_str()) == 0;
+    const int renameErrno = errno;
+    if (renamed) {
+        gCommitted.fetch_add(1);
+        unregisterTemp(slot_);
+        slot_ = -1;
+        temp_.clear();
+    }
+    pthread_sigmask(SIG_SETMASK, &before, nullptr);
+    errno = renameErrno;
+    if (!renamed) return failed("rename");
     return "";
 }
 

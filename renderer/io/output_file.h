@@ -61,5 +61,7 @@ long maxNameLength(const std::string& dir);
 
 // For a signal handler: unlinks every temporary output file still open. Async-signal-safe.
 void removeTemporaryOutputs();
+// For a signal handler: how many outputs this process has put in place. Async-signal-safe.
+int committedOutputs();
 
 } // namespace pt
