@@ -575,8 +575,10 @@ def cornell_box():
     g.d["extensionsUsed"] = ["KHR_materials_specular", "KHR_materials_emissive_strength"]
     for name, tris in groups.items():
         ext = {"KHR_materials_specular": {"specularFactor": 0.0}}
+        # doubleSided: the OBJ's surfaces have two sides, and its winding says nothing of which is
+        # the front (glTF's default would make every wall vanish seen from behind).
         mat = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": colors[name] + [1], "metallicFactor": 0.0,
-                                                       "roughnessFactor": 1.0}, "extensions": ext}
+                                                       "roughnessFactor": 1.0}, "extensions": ext, "doubleSided": True}
         if name == "Lamp":
             mat["emissiveFactor"] = [1.0, 12.0 / 17.0, 4.0 / 17.0]
             ext["KHR_materials_emissive_strength"] = {"emissiveStrength": 17.0}

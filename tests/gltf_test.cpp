@@ -404,6 +404,82 @@ TEST(Gltf, UnlitIsSeenByCameraRaysOnly) {
     EXPECT_NE(lit(&lambert), lit(nullptr)) << "a Lambert quad in its place shadows the floor in view";
 }
 
+// doubleSided false: the camera does not see an opaque surface from behind (its winding turned
+// away); a transmitting one keeps both sides. Under a white sky a dark quad facing the camera is
+// seen; turned away it is not (the sky, 1 exactly), unless it is double-sided or transmits.
+TEST(Gltf, SingleSidedSurfacesAreNotSeenFromBehind) {
+    auto seen = [](Material m, bool facing) {
+        Scene s = emptyScene(lookAt({0, 0, 5}, {0, 0, 0}, 10));
+        s.environment.sky = s.environment.ground = Spectrum(1.0f);
+        const uint32_t mat = addMaterial(s, m);
+        if (facing) addQuad(s, {-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0}, mat); // normal +z, to the camera
+        else addQuad(s, {-3, -3, 0}, {-3, 3, 0}, {3, 3, 0}, {3, -3, 0}, mat);        // normal -z
+        return regionStats(render(s, 8, 8, 16), 0, 0, 8, 8).mean;
+    };
+    Material dark = dielectric(Spectrum(0.1f), 0.25f, 1.5f);
+    dark.singleSided = true;
+    EXPECT_LT(seen(dark, true).y, 0.5f) << "its front is seen";
+    EXPECT_EQ(seen(dark, false), Spectrum(1.0f)) << "its back is not seen: the sky";
+    Material twoSided = dark;
+    twoSided.singleSided = false;
+    EXPECT_LT(seen(twoSided, false).y, 0.5f) << "a double-sided surface is seen from behind";
+    Material glass = dielectric(Spectrum(0.9f, 0.1f, 0.1f), 0.0f, 1.5f);
+    glass.transparency = 1.0f;
+    glass.singleSided = true;
+    EXPECT_LT(seen(glass, false).y, 0.5f) << "a transmitting surface keeps its back: red glass";
+}
+
+// Every ray but the camera's sees both sides of a single-sided surface: a quad above the view,
+// between a lamp and the floor, shadows the floor the same whichever way it faces (a surface
+// culled for light transport too would be one-way glass, letting through the light of whatever
+// lies behind it). A single-sided emitter lights the floor from its back as from its front, and
+// next-event estimation, BSDF sampling and MIS agree on it.
+TEST(Gltf, SingleSidedSurfacesHaveTwoSidesForLight) {
+    Material dark = dielectric(Spectrum(0.1f), 0.25f, 1.5f);
+    dark.singleSided = true;
+    auto floor = [&](const Material* quad, bool facingFloor) {
+        Scene s = emptyScene(lookAt({1, 0.5f, 3}, {1, 0, 0}, 30));
+        Material ground;
+        ground.kd = Spectrum(0.5f);
+        addQuad(s, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, {-5, 0, -5}, addMaterial(s, ground));
+        if (quad) {
+            const uint32_t mat = addMaterial(s, *quad);
+            if (facingFloor) addQuad(s, {0.2f, 1, -0.3f}, {0.8f, 1, -0.3f}, {0.8f, 1, 0.3f}, {0.2f, 1, 0.3f}, mat); // normal -y
+            else addQuad(s, {0.2f, 1, 0.3f}, {0.8f, 1, 0.3f}, {0.8f, 1, -0.3f}, {0.2f, 1, -0.3f}, mat);           // normal +y
+        }
+        LocalLight lamp;
+        lamp.center = Vec3(0, 2, 0);
+        lamp.intensity = Spectrum(5.0f);
+        s.lights.push_back(lamp);
+        RenderSettings one;
+        one.maxDepth = 1;
+        return render(s, 32, 16, 16, one).mean;
+    };
+    EXPECT_NE(floor(&dark, true), floor(nullptr, true)) << "the quad shadows the floor";
+    EXPECT_EQ(floor(&dark, false), floor(&dark, true)) << "whichever way it faces";
+
+    auto lit = [](bool faceDown) {
+        Scene s = emptyScene(lookAt({0, 3, 4}, {0, 0, 0}, 40));
+        Material ground;
+        ground.kd = Spectrum(0.6f);
+        addQuad(s, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, {-5, 0, -5}, addMaterial(s, ground));
+        Material lamp = dielectric(Spectrum(0.0f), 1.0f, 1.5f);
+        lamp.emission = Spectrum(4.0f, 3.0f, 2.0f);
+        lamp.singleSided = true;
+        const uint32_t mat = addMaterial(s, lamp);
+        if (faceDown) addQuad(s, {-1, 1.5f, -1}, {1, 1.5f, -1}, {1, 1.5f, 1}, {-1, 1.5f, 1}, mat); // normal -y
+        else addQuad(s, {-1, 1.5f, 1}, {1, 1.5f, 1}, {1, 1.5f, -1}, {-1, 1.5f, -1}, mat);          // normal +y
+        return s;
+    };
+    RenderSettings one;
+    one.maxDepth = 1;
+    const RegionStats down = regionStats(render(lit(true), 16, 12, 256, one), 0, 9, 16, 12);
+    const RegionStats up = regionStats(render(lit(false), 16, 12, 256, one), 0, 9, 16, 12);
+    ASSERT_GT(down.mean.x, 0.05f);
+    expectNear(up, down.mean, 5.0f, 1e-3f, "the floor lit by a single-sided lamp's back, against its front");
+    expectStrategiesAgree(lit(false));
+}
+
 // KHR_materials_volume's absorption, Beer-Lambert along the path inside: a slab of ior 1 (no
 // refraction, no Fresnel at normal incidence) and thickness 0.5 in front of an emitter of
 // radiance 1 transmits exp(-sigma 0.5) per channel, sigma from attenuationColor and

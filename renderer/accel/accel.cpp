@@ -36,14 +36,24 @@ void cutoutFilter(const RTCFilterFunctionNArguments* args) {
     const Scene& scene = *cut->scene;
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
-        uint32_t tri = cut->triangle[RTCHitN_primID(args->hit, args->N, i)];
-        float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
-        const Material& m = scene.materials[scene.triMaterial[tri]];
-        if (m.unlit && !(RTCRayN_mask(args->ray, args->N, i) & kCameraRay)) {
+        const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
+        const uint8_t flags = cut->flags[prim];
+        if ((flags & Cutouts::kUnlit) && !(RTCRayN_mask(args->ray, args->N, i) & kCameraRay)) {
             args->valid[i] = 0;
             continue;
         }
-        if (!m.hasCutout()) continue;
+        // Embree's Ng points out of the face whose corners run counter-clockwise: the front.
+        if ((flags & Cutouts::kCullBack) && (RTCRayN_mask(args->ray, args->N, i) & kCameraRay) &&
+            RTCHitN_Ng_x(args->hit, args->N, i) * RTCRayN_dir_x(args->ray, args->N, i) +
+                    RTCHitN_Ng_y(args->hit, args->N, i) * RTCRayN_dir_y(args->ray, args->N, i) +
+                    RTCHitN_Ng_z(args->hit, args->N, i) * RTCRayN_dir_z(args->ray, args->N, i) > 0.0f) {
+            args->valid[i] = 0;
+            continue;
+        }
+        if (!(flags & Cutouts::kCutout)) continue;
+        uint32_t tri = cut->triangle[prim];
+        float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
+        const Material& m = scene.materials[scene.triMaterial[tri]];
         float coverage = m.coverage * scene.textures->scalar(m.alphaMap, scene.uvAt(tri, u, v), Footprint{});
         if (m.alphaCutoff >= 0.0f) coverage = coverage >= m.alphaCutoff ? 1.0f : 0.0f;
         if (coverage >= 1.0f) continue;
@@ -122,12 +132,21 @@ Accel::Accel(const Scene& scene, int threads, const AccelOptions& options) : imp
     // Which triangles have a cutout: they go into a geometry of their own.
     impl_->cutouts.scene = &scene;
     bool anyCutout = false;
-    auto filtered = [](const Material& m) { return m.hasCutout() || m.unlit; };
-    for (const Material& m : scene.materials) anyCutout |= filtered(m);
+    auto flagsOf = [](const Material& m) {
+        return uint8_t((m.hasCutout() ? Cutouts::kCutout : 0) | (m.unlit ? Cutouts::kUnlit : 0) |
+                       (m.cullsBackFaces() ? Cutouts::kCullBack : 0));
+    };
+    for (const Material& m : scene.materials) anyCutout |= flagsOf(m) != 0;
     if (anyCutout)
-        for (size_t t = 0; t < scene.triangleCount(); ++t)
-            (filtered(scene.materials[scene.triMaterial[t]]) ? impl_->cutouts.triangle : impl_->opaqueTriangle)
-                .push_back(uint32_t(t));
+        for (size_t t = 0; t < scene.triangleCount(); ++t) {
+            const uint8_t flags = flagsOf(scene.materials[scene.triMaterial[t]]);
+            if (flags == 0) {
+                impl_->opaqueTriangle.push_back(uint32_t(t));
+                continue;
+            }
+            impl_->cutouts.triangle.push_back(uint32_t(t));
+            impl_->cutouts.flags.push_back(flags);
+        }
     auto addGeometry = [&](const std::vector<uint32_t>* subset, unsigned id) {
         size_t count = subset ? subset->size() : scene.triangleCount();
         if (count == 0) return;

@@ -22,9 +22,13 @@ constexpr unsigned kCameraRay = 1u << 1, kAnyRay = 0xFFFFFFFFu & ~kCameraRay;
 // too: only camera rays see them, as Blender's importer has it; every other ray passes.
 // Camera rays carry kCameraRay in their mask (every geometry's mask is all ones, so masks
 // select nothing else).
+// Single-sided opaque surfaces (glTF doubleSided false, Material::cullsBackFaces) sit there as
+// well: a camera ray's hit on a back face, by the triangle's winding, is dropped.
 struct Cutouts {
+    enum Flag : uint8_t { kCutout = 1, kUnlit = 2, kCullBack = 4 };
     const Scene* scene = nullptr;
     std::vector<uint32_t> triangle; // primitive of the cutout geometry -> scene triangle
+    std::vector<uint8_t> flags;     // and its Flags
 };
 
 // Sphere lights (radius > 0), tested exactly by intersectSphere. A few are tested one by one after

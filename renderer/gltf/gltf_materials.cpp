@@ -193,6 +193,7 @@ uint32_t GltfMaterials::plainMaterialFor(int index, const std::string& where) {
             m.metallic = 1.0f;
             m.roughnessAlpha = 1.0f;
             m.eta = 1.5f;
+            m.singleSided = true; // as every material that does not say doubleSided
             defaultMaterial_ = uint32_t(scene_.materials.size());
             scene_.materials.push_back(m);
         }
@@ -208,6 +209,7 @@ uint32_t GltfMaterials::plainMaterialFor(int index, const std::string& where) {
     Material m;
     m.name = g.name.empty() ? "material " + std::to_string(index) : g.name;
     m.model = MaterialModel::MetalRough;
+    m.singleSided = !g.doubleSided;
     m.kd = colorOf(pbr.baseColorFactor, Spectrum(1.0f));
     float opacity = pbr.baseColorFactor.size() == 4 ? float(pbr.baseColorFactor[3]) : 1.0f;
     float metallic = float(pbr.metallicFactor), roughness = float(pbr.roughnessFactor);

@@ -27,6 +27,7 @@ struct Material {
     bool volume = false;          // glTF KHR_materials_volume: the mesh bounds a volume that refracting paths enter
     bool vertexColors = false;    // glTF COLOR_0 multiplies kd (Scene::vertexColors)
     bool unlit = false;           // glTF KHR_materials_unlit: camera rays see kd, nothing else sees it
+    bool singleSided = false;     // glTF doubleSided false: cullsBackFaces() says what that does
     Spectrum kd{0.7f};            // Lambert reflectance (Kd, diffuseReflectance)
     Spectrum ks{1.0f};            // mirror colour (Ks, specularReflectance)
     Spectrum r0{0.0f};            // Fresnel reflectance at normal incidence (reflat0deg)
@@ -62,6 +63,11 @@ struct Material {
     std::string name;
 
     bool isEmissive() const { return !isBlack(emission); }
+    // A single-sided opaque surface is not seen from behind (the side its winding turns away,
+    // glTF's back-face culling): camera rays pass its back. Every other ray sees both sides, so
+    // that light transport stays that of a surface (docs/gltf.md says why). A transmitting one
+    // keeps both sides for the camera too: refraction through a closed mesh leaves by its back.
+    bool cullsBackFaces() const { return singleSided && transparency == 0.0f && !volume; }
     bool hasCutout() const { return alphaMap.used(); }
     bool perturbsNormal() const { return normalMap.used() || bumpMap.used(); }
     // Whether shading reads a map of it or vertex colours (and so needs texture coordinates).
