@@ -20,6 +20,8 @@ keeps its .bin and .png beside it, as exported files do. Run from anywhere; rewr
   texture_transform.gltf  one image through five sampler wraps and KHR_texture_transforms
   clearcoat.gltf      KHR_materials_clearcoat: smooth, rough, over black, and textured coats;
   clearcoat_white.gltf  the same spheres under the default white environment (crosscheck)
+  metallic_glass_white.gltf  smooth glass spheres of metallic 0, 0.5 and 1 before a striped wall,
+                      under the default white environment (the Cycles crosscheck of issue 49)
 """
 import base64
 import json
@@ -693,6 +695,27 @@ def volume(lit=True):
     g.write("volume.gltf" if lit else "volume_white.gltf")
 
 
+def metallic_glass():
+    """KHR_materials_transmission with metallic (issue 49): from the left smooth, fully transmitting
+    spheres of metallic 0, 0.5 and 1 (base colour a pale amber, so that the metal's tint shows)
+    over a floor, before the striped wall, under the default white environment. The specification
+    mixes a metal mirror and the glass by metallic: the middle one is half of each, clear."""
+    g = Gltf()
+    g.d["extensionsUsed"] = ["KHR_materials_transmission", "KHR_materials_volume"]
+    floor = g.material(name="Floor", pbrMetallicRoughness={"baseColorFactor": [0.6, 0.6, 0.6, 1], "metallicFactor": 0.0,
+                                                            "roughnessFactor": 0.8})
+    g.node(mesh=ground(g, 20, floor), name="Ground")
+    striped_wall(g)
+    for k, metallic in enumerate([0.0, 0.5, 1.0]):
+        m = g.material(name=f"Metallic{metallic}", pbrMetallicRoughness={"baseColorFactor": [1.0, 0.85, 0.6, 1],
+                                                                         "metallicFactor": metallic, "roughnessFactor": 0.0},
+                       extensions={"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                                   "KHR_materials_volume": {"thicknessFactor": 1.0}})
+        g.node(mesh=sphere(g, 0.45, m), translation=[-1.1 + 1.1 * k, 0.45, 0.0], name=f"Globe{k}")
+    camera_node(g, [0.0, 1.2, 6.0], [0.0, 0.5, 0.0], 30.0, aspect=2.0)
+    g.write("metallic_glass_white.gltf")
+
+
 def sheen(lit=True):
     """KHR_materials_sheen (issue 28) on five spheres over a floor, under an emissive panel and a
     directional light from behind (the sheen shows at grazing angles), or under the default white
@@ -769,6 +792,7 @@ if __name__ == "__main__":
     clearcoat(lit=False)
     volume()
     volume(lit=False)
+    metallic_glass()
     sheen()
     sheen(lit=False)
     unlit()

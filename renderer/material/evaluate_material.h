@@ -42,12 +42,19 @@ inline MetalRoughParameters metalRoughParameters(const Material& m, const Surfac
     return p;
 }
 
-// KHR_materials_transmission: the lab tree's FresnelBlend over refraction (with the ior, or
-// straight through a thin wall where the material bounds no volume) and Lambert, its refraction
-// tinted by the base colour; metal does not transmit.
+// KHR_materials_transmission: the specification's mix, by metallic, of a metal (mirror with the
+// base colour's Fresnel) and a dielectric whose Fresnel lies over transmission T (refraction
+// with the ior, or straight through a thin wall where the material bounds no volume, tinted by
+// the base colour) and (1 - T) Lambert. As the lab tree: the mirror's weight is Schlick of the
+// mixed F0 (Schlick is linear in F0: the mix of the two Fresnels); refraction and Lambert share
+// the dielectric's part that its own Fresnel does not reflect, (1 - metallic)(1 - F). Metal
+// transmits nothing and has no diffuse lobe: a glass of metallic 0.5 is half mirror, half glass.
 inline LabParameters transmissionParameters(const Material& m, const MetalRoughParameters& p, const SurfaceInputs& in) {
     LabParameters lab = labParameters(m, p.baseColor, p.baseColor, p.alpha, p.metallic);
-    lab.transparency *= in.transmission * (1.0f - p.metallic);
+    lab.transparency *= in.transmission;
+    lab.kd = p.baseColor;
+    lab.metalShare = p.metallic;
+    lab.dielectricR0 = sqr((m.eta - 1.0f) / (m.eta + 1.0f));
     lab.refractTint = p.baseColor;
     lab.thin = !m.volume; // the specification: without a volume the surface is a thin wall
     return lab;

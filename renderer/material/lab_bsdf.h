@@ -46,6 +46,12 @@ struct LabParameters {
     float alpha = 0.001f; // GGX roughness of Spec and Refr; <= kSmoothAlpha: delta lobes
     Spectrum refractTint{1.0f}; // multiplies Refr: white in the lab, the base colour for glTF transmission
     bool thin = false;          // Refr passes straight through a thin wall (glTF transmission without a volume)
+    // glTF transmission mixes a metal and a dielectric by metallic: the metal's share reflects by
+    // its own Fresnel (in r0, mixed) and the rest of it is absorbed; only the dielectric's share
+    // of what its own Fresnel (dielectricR0) does not reflect is split between Refr and Diffuse.
+    // 0: the lab's tree, where all that the blend does not reflect is split.
+    float metalShare = 0.0f;
+    float dielectricR0 = 0.0f;
 };
 
 // The parameters of a material whose Kd, after its texture, is `kd`. With Pm (the PBR
@@ -132,7 +138,9 @@ inline void LabBsdf::init(const LabParameters& m, float cosThetaO, HemisphereSam
     b.thin = m.thin;
     b.hemisphere = hemisphere;
     Spectrum wF = m.blend * schlickFresnel(m.r0, cosThetaO);
-    Spectrum rest = Spectrum(1.0f) - wF;
+    Spectrum rest = m.metalShare > 0.0f
+                        ? (1.0f - m.metalShare) * (Spectrum(1.0f) - schlickFresnel(Spectrum(m.dielectricR0), cosThetaO))
+                        : Spectrum(1.0f) - wF;
     b.mirror = wF * m.ks;
     b.refract = rest * m.transparency * m.refractTint;
     b.diffuse = rest * (1.0f - m.transparency) * m.kd;
