@@ -14,11 +14,17 @@ EnvironmentLight::EnvironmentLight(const EnvironmentMap& map) : map_(map) {
         // The row's exact solid angle per texel, so that a constant map integrates to 4 pi.
         double rowSolidAngle = (2.0 * kPi / w) * (std::cos(kPi * y / h) - std::cos(kPi * (y + 1) / h));
         for (int x = 0; x < w; ++x) {
+            // The bilinear lookup spreads a texel's radiance as a tent over its own cell and its
+            // eight neighbours': each cell is weighted by the mean of that tent over it (per axis
+            // 3/4 from its own texel, 1/8 from each side's), as the lookup clamps rows at the
+            // poles and wraps columns. Every cell the lookup lights has weight; the largest value
+            // around a texel, weighted before, gave a lone bright texel's eight dark neighbours
+            // as many samples as itself.
             double m = 0.0;
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx) {
                     int yy = std::clamp(y + dy, 0, h - 1), xx = ((x + dx) % w + w) % w;
-                    m = std::max(m, level[size_t(yy) * w + xx]);
+                    m += level[size_t(yy) * w + xx] * (dx == 0 ? 0.75 : 0.125) * (dy == 0 ? 0.75 : 0.125);
                 }
             weights[size_t(y) * w + x] = m * rowSolidAngle;
             integral_ += level[size_t(y) * w + x] * rowSolidAngle;

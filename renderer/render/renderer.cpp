@@ -49,8 +49,8 @@ struct PixelSums {
         glm::dvec3 L(radiance);
         sum += L;
         sumSq += L * L;
+        albedo += glm::dvec3(first.albedo); // a miss's too: the sky's colour
         if (first.depth < kInf) {
-            albedo += glm::dvec3(first.albedo);
             normal += glm::dvec3(first.normal);
             depth += first.depth;
             ++hits;
