@@ -94,6 +94,29 @@ TEST(DenoiseFeatures, NormalIsThatSeenInAMirror) {
     }
 }
 
+// Where the camera sees the sky, its albedo is the sky's colour within [0, 1] (Cycles' convention:
+// the filter then sees the background's edges and shading); the sky seen in a mirror gives 0,
+// since there the lobe is chosen at random. Left half: a mirror facing the camera, whose rays
+// it sends back past the camera into the sky; right half: the sky itself.
+TEST(DenoiseFeatures, TheSkySeenDirectlyIsItsOwnAlbedo) {
+    Scene scene = emptyScene(lookAt({0, 0, 4}, {0, 0, 0}, 20));
+    scene.environment.sky = scene.environment.ground = Spectrum(0.3f, 0.6f, 2.0f);
+    Material mirror;
+    mirror.kd = Spectrum(0.0f);
+    mirror.blend = 1.0f;
+    mirror.r0 = Spectrum(1.0f);
+    mirror.ks = Spectrum(0.9f);
+    addQuad(scene, {-5, -5, 0}, {0, -5, 0}, {0, 5, 0}, {-5, 5, 0}, addMaterial(scene, mirror));
+    Features f = renderWithFeatures(scene, 16, 4, 1);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            if (x == 7 || x == 8) continue; // the mirror's edge
+            const float* a = &f.albedo[3 * (size_t(y) * 16 + x)];
+            Spectrum expected = x < 8 ? Spectrum(0.0f) : Spectrum(0.3f, 0.6f, 1.0f);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], expected[c], 1e-5f) << "pixel " << x << "," << y;
+        }
+}
+
 // OIDN, or a skip that says how to install it (a failure where CI requires it).
 #define OPEN_DENOISER_OR_SKIP(d)                                                     \
     std::string missing;                                                             \
